@@ -1,0 +1,40 @@
+/// poroSph: the porous-flow SPH solver. Reads a case, runs it to endTime, writes time directories.
+
+#include "core/Arguments.hpp"
+#include "core/Error.hpp"
+#include "core/Log.hpp"
+#include "core/Parallel.hpp"
+#include "io/CaseReader.hpp"
+#include "io/TimeDirectory.hpp"
+
+#include <iostream>
+#include <sstream>
+
+using namespace poro;
+
+int main(int argc, char* argv[]) try {
+  const Arguments args(argc, argv, "poroSph",
+                       "Implicit incompressible porous flow with SPH (Boettcher et al. 2025). Runs the case\n"
+                       "from its start time directory to endTime and writes time directories and case.pvd.");
+  if (args.help()) {
+    std::cout << args.usage();
+    return 0;
+  }
+  SimulationCase simulation = readCase(args.caseDir(), args.threads());
+  std::ostringstream banner;
+  banner << "Case: " << args.caseDir() << "\nStarting from time " << simulation.startName << " with "
+         << simulation.particles.particleCount() << " particles";
+  log::info(banner.str());
+  Solver solver(std::move(simulation.particles), simulation.fluid, simulation.solver, simulation.control,
+                simulation.start);
+  log::info("Threads: " + std::to_string(parallel::threads()));
+  TimeWriter writer(args.caseDir(), simulation.output, simulation.startName);
+  solver.run([&](const Solver& s) { writer.write(s.particles(), s.state()); });
+  return 0;
+} catch (const Error& e) {
+  log::fatal(e);
+  return 1;
+} catch (const std::exception& e) {
+  log::fatal(e.what());
+  return 1;
+}

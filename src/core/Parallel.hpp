@@ -1,0 +1,76 @@
+#pragma once
+/// The only place with `#pragma omp` (STYLE.md §4). Loops are in gather form: iteration i writes slot i only.
+/// Reductions use a fixed blocking independent of the thread count, so results are bit-reproducible
+/// for any number of threads (METHOD.md §1).
+
+#include <cstddef>
+#include <vector>
+
+namespace poro::parallel {
+
+/// Sets the number of OpenMP threads (n >= 1).
+void setThreads(int n);
+/// Number of threads a parallel loop uses.
+int threads();
+
+/// Calls body(i) for i in [0, n) in parallel; body must write only slot i.
+template <class Body>
+void forEach(std::size_t n, const Body& body) {
+  const long long count = static_cast<long long>(n);
+#pragma omp parallel for schedule(static)
+  for (long long i = 0; i < count; ++i) body(static_cast<std::size_t>(i));
+}
+
+/// Like forEach but with dynamic scheduling in chunks, for loops with uneven work per item.
+template <class Body>
+void forEachDynamic(std::size_t n, const Body& body) {
+  const long long count = static_cast<long long>(n);
+#pragma omp parallel for schedule(dynamic, 256)
+  for (long long i = 0; i < count; ++i) body(static_cast<std::size_t>(i));
+}
+
+/// Block size of deterministic reductions.
+inline constexpr std::size_t kReduceBlock = 4096;
+
+/// Deterministic reduction: sum of value(i) for i in [0, n) with a blocking that does not depend on the
+/// thread count. T needs T{} as zero and operator+=.
+template <class T, class Value>
+T sum(std::size_t n, const Value& value) {
+  const std::size_t blocks = (n + kReduceBlock - 1) / kReduceBlock;
+  std::vector<T> partial(blocks, T{});
+  const long long nb = static_cast<long long>(blocks);
+#pragma omp parallel for schedule(static)
+  for (long long b = 0; b < nb; ++b) {
+    T acc{};
+    const std::size_t begin = static_cast<std::size_t>(b) * kReduceBlock;
+    const std::size_t end = begin + kReduceBlock < n ? begin + kReduceBlock : n;
+    for (std::size_t i = begin; i < end; ++i) acc += value(i);
+    partial[static_cast<std::size_t>(b)] = acc;
+  }
+  T total{};
+  for (const T& p : partial) total += p;
+  return total;
+}
+
+/// Deterministic maximum of value(i) (returns lowest if n == 0). Max is order-independent.
+template <class Value>
+double max(std::size_t n, double lowest, const Value& value) {
+  double result = lowest;
+  const long long count = static_cast<long long>(n);
+#pragma omp parallel for schedule(static) reduction(max : result)
+  for (long long i = 0; i < count; ++i) {
+    const double v = value(static_cast<std::size_t>(i));
+    if (v > result) result = v;
+  }
+  return result;
+}
+
+/// Exclusive prefix sum of counts into offsets (offsets has counts.size() + 1 entries).
+template <class Int>
+void exclusiveScan(const std::vector<Int>& counts, std::vector<Int>& offsets) {
+  offsets.resize(counts.size() + 1);
+  offsets[0] = 0;
+  for (std::size_t i = 0; i < counts.size(); ++i) offsets[i + 1] = offsets[i] + counts[i];
+}
+
+} // namespace poro::parallel

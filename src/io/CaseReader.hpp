@@ -1,0 +1,33 @@
+#pragma once
+/// Reads and validates a whole case before anything runs (ARCHITECTURE.md "Input is checked at the
+/// door"): system/controlDict, system/solverDict, constant/fluidProperties, the particle radius of
+/// system/particleDict, and the particles of the start time directory.
+
+#include "io/OutputSettings.hpp"
+#include "physics/FluidProperties.hpp"
+#include "physics/Solver.hpp"
+#include "physics/SolverSettings.hpp"
+#include "physics/TimeControl.hpp"
+
+#include <filesystem>
+#include <string>
+
+namespace poro {
+
+struct SimulationCase {
+  TimeControl control;
+  OutputSettings output;
+  SolverSettings solver;
+  FluidProperties fluid;
+  std::string startName; ///< the time directory the run starts from
+  RunState start;
+  ParticleSystem particles;
+};
+
+/// `threads` > 0 overrides solverDict's threads (-threads on the command line).
+SimulationCase readCase(const std::filesystem::path& caseDir, int threads = 0);
+
+/// particleRadius of system/particleDict (the one key the solver needs from it).
+double readParticleRadius(const std::filesystem::path& caseDir);
+
+} // namespace poro

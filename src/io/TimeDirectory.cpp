@@ -1,0 +1,184 @@
+#include "io/TimeDirectory.hpp"
+
+#include "core/Dictionary.hpp"
+#include "core/Error.hpp"
+#include "core/Log.hpp"
+#include "io/AtomicFile.hpp"
+#include "io/ParticleVtk.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace poro {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* const kPvdName = "case.pvd";
+
+bool isTimeName(const std::string& name, double& value) {
+  if (name.empty() || !(std::isdigit(static_cast<unsigned char>(name[0])))) return false;
+  char* end = nullptr;
+  value = std::strtod(name.c_str(), &end);
+  return end && *end == '\0' && std::isfinite(value);
+}
+
+SetKind kindOfFile(const std::string& stem) {
+  if (stem == "fluid") return SetKind::Fluid;
+  if (stem == "boundary") return SetKind::Boundary;
+  return SetKind::Porous;
+}
+
+std::string formatExact(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", value);
+  return buffer;
+}
+
+void writeSets(const fs::path& dir, const ParticleSystem& particles, bool withBoundaries, bool binary) {
+  for (std::size_t s = 0; s < particles.size(); ++s) {
+    const ParticleSet& set = particles[s];
+    if (set.kind() == SetKind::Boundary && !withBoundaries) continue;
+    writeParticleSet(set, dir / (set.name() + ".vtp"), binary);
+  }
+  fs::create_directories(dir / "uniform");
+}
+
+void writeRunState(const fs::path& dir, const RunState& state) {
+  std::ostringstream out;
+  out << "# Run state of this time directory (restart: startFrom latestTime).\n"
+      << "time: " << formatExact(state.time) << "\nstep: " << state.step
+      << "\ndeltaT: " << formatExact(state.nextDeltaT) << "  # the step size of the coming step [s]\n";
+  writeFileAtomically(dir / "uniform" / "time", out.str());
+}
+
+/// Writes into `.<name>.tmp` and renames it to `<name>` once every file is complete.
+template <class Fill>
+void writeDirectoryAtomically(const fs::path& caseDir, const std::string& name, const Fill& fill) {
+  const fs::path target = caseDir / name;
+  const fs::path temporary = caseDir / ("." + name + ".tmp");
+  std::error_code ec;
+  fs::remove_all(temporary, ec);
+  fs::create_directories(temporary / "uniform", ec);
+  if (ec) throw OutputError(temporary.string() + ": cannot create directory: " + ec.message());
+  fill(temporary);
+  renameAtomically(temporary, target);
+}
+
+} // namespace
+
+std::string timeName(double time) {
+  char buffer[40];
+  for (int precision = 6; precision <= 17; ++precision) {
+    std::snprintf(buffer, sizeof buffer, "%.*g", precision, time);
+    const double back = std::strtod(buffer, nullptr);
+    if (std::abs(back - time) <= 1e-10 * std::max(1.0, std::abs(time))) break;
+  }
+  return buffer;
+}
+
+std::vector<TimeDirectoryEntry> listTimeDirectories(const fs::path& caseDir) {
+  std::vector<TimeDirectoryEntry> result;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(caseDir, ec)) {
+    double value = 0.0;
+    const std::string name = entry.path().filename().string();
+    if (entry.is_directory() && isTimeName(name, value) && fs::exists(entry.path() / "uniform" / "time"))
+      result.push_back({name, value});
+  }
+  std::sort(result.begin(), result.end(), [](const auto& a, const auto& b) { return a.time < b.time; });
+  return result;
+}
+
+RunState readRunState(const fs::path& timeDir) {
+  const Dictionary dict = Dictionary::read((timeDir / "uniform" / "time").string());
+  RunState state;
+  state.time = dict.getReal("time", Range::nonNegative());
+  state.step = dict.getInt("step", Range::nonNegative());
+  state.nextDeltaT = dict.getReal("deltaT", Range::nonNegative()); // 0: take controlDict deltaT
+  dict.checkUnknownKeys();
+  return state;
+}
+
+ParticleSystem readParticles(const fs::path& caseDir, const std::string& name, double particleRadius) {
+  const fs::path dir = caseDir / name;
+  if (!fs::is_directory(dir)) throw InputError(dir.string() + ": time directory not found");
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.path().extension() == ".vtp") files.push_back(entry.path());
+  if (!fs::exists(dir / "boundary.vtp") && fs::exists(caseDir / "0" / "boundary.vtp"))
+    files.push_back(caseDir / "0" / "boundary.vtp");
+  // Fluid first, then porous sets by name, boundaries last (ParticleSystem order, METHOD.md §1).
+  auto rank = [](const fs::path& p) { return static_cast<int>(kindOfFile(p.stem().string())); };
+  std::sort(files.begin(), files.end(), [&](const fs::path& a, const fs::path& b) {
+    return rank(a) != rank(b) ? rank(a) < rank(b) : a.stem() < b.stem();
+  });
+  ParticleSystem particles(particleRadius);
+  for (const fs::path& file : files) {
+    ParticleSet& set = particles.add(file.stem().string(), kindOfFile(file.stem().string()));
+    readParticleSet(set, file);
+  }
+  if (!particles.find("fluid"))
+    throw InputError(dir.string() + ": no fluid.vtp; run sampleParticles first (it writes 0/)");
+  return particles;
+}
+
+TimeWriter::TimeWriter(fs::path caseDir, const OutputSettings& settings, const std::string& startName)
+    : caseDir_(std::move(caseDir)), settings_(settings) {
+  const fs::path pvd = caseDir_ / kPvdName;
+  const double start = std::strtod(startName.c_str(), nullptr);
+  if (fs::exists(pvd)) {
+    try {
+      series_ = PvdSeries::read(pvd);
+    } catch (const InputError& e) {
+      log::warning(std::string(e.what()) + "; rebuilding case.pvd");
+      series_ = PvdSeries();
+    }
+  }
+  series_.removeTimesAfter(start);
+  for (const auto& entry : fs::directory_iterator(caseDir_ / startName))
+    if (entry.path().extension() == ".vtp") series_.add(start, entry.path().stem().string(), startName + "/" + entry.path().filename().string());
+  if (startName != "0" && fs::exists(caseDir_ / "0" / "boundary.vtp")) series_.add(0.0, "boundary", "0/boundary.vtp");
+  series_.write(pvd);
+}
+
+void TimeWriter::write(const ParticleSystem& particles, const RunState& state) {
+  const std::string name = timeName(state.time);
+  writeDirectoryAtomically(caseDir_, name, [&](const fs::path& dir) {
+    writeSets(dir, particles, false, settings_.binary);
+    writeRunState(dir, state);
+  });
+  for (std::size_t s = 0; s < particles.size(); ++s)
+    if (particles[s].kind() != SetKind::Boundary)
+      series_.add(state.time, particles[s].name(), name + "/" + particles[s].name() + ".vtp");
+  if (settings_.purgeWrite > 0) purge();
+  series_.write(caseDir_ / kPvdName);
+}
+
+void TimeWriter::purge() {
+  auto times = listTimeDirectories(caseDir_);
+  times.erase(std::remove_if(times.begin(), times.end(), [](const auto& t) { return t.name == "0"; }), times.end());
+  const std::size_t keep = static_cast<std::size_t>(settings_.purgeWrite);
+  for (std::size_t i = 0; i + keep < times.size(); ++i) {
+    std::error_code ec;
+    fs::remove_all(caseDir_ / times[i].name, ec);
+    series_.removeTime(times[i].name);
+  }
+}
+
+void TimeWriter::writeAll(const fs::path& caseDir, const ParticleSystem& particles, const RunState& state, bool binary) {
+  const std::string name = timeName(state.time);
+  writeDirectoryAtomically(caseDir, name, [&](const fs::path& dir) {
+    writeSets(dir, particles, true, binary);
+    writeRunState(dir, state);
+  });
+  PvdSeries series;
+  for (std::size_t s = 0; s < particles.size(); ++s)
+    series.add(state.time, particles[s].name(), name + "/" + particles[s].name() + ".vtp");
+  series.write(caseDir / kPvdName);
+}
+
+} // namespace poro

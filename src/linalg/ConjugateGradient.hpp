@@ -1,0 +1,38 @@
+#pragma once
+/// Preconditioned conjugate gradients on a matrix-free symmetric positive definite block operator
+/// (METHOD.md §6.5.8).
+
+#include "linalg/BlockVector.hpp"
+
+namespace poro::linalg {
+
+/// y = A x for a matrix-free operator; must overwrite y.
+class BlockOperator {
+public:
+  virtual ~BlockOperator() = default;
+  virtual void apply(const BlockVector& x, const BlockVector& y) const = 0;
+};
+
+struct CgSettings {
+  double tolerance = 1e-4; ///< relative residual ||b - A x|| <= tolerance ||b||
+  int maxIterations = 100;
+};
+
+struct CgResult {
+  int iterations = 0;
+  double relativeResidual = 0.0;
+  bool converged = false;
+};
+
+/// Work vectors the caller provides (views over scratch fields of the particle sets).
+struct CgWork {
+  BlockVector r, z, p, q;
+};
+
+/// Solves A x = b starting from the given x. `inverseDiagonal` holds the inverted 3x3 diagonal blocks
+/// (block-Jacobi preconditioner) or is empty for no preconditioning. Throws NumericalError if p^T A p <= 0
+/// (the operator is not positive definite).
+CgResult solveCg(const BlockOperator& a, const BlockDiagonal& inverseDiagonal, const BlockVector& b, const BlockVector& x,
+                 const CgWork& work, const CgSettings& settings);
+
+} // namespace poro::linalg

@@ -1,0 +1,20 @@
+#pragma once
+/// Names of the per-particle fields the solver registers (METHOD.md §7 lists what a restart saves).
+
+namespace poro::field {
+
+// Restart state.
+inline constexpr const char* pi = "pi";             ///< pi = rho^max p / rho^2 of the last pressure solve [m^2/s^2]
+inline constexpr const char* deltaV = "deltaV";     ///< last implicit increment u - v^n (CG warm start) [m/s]
+// Output only.
+inline constexpr const char* density = "density";   ///< rho [kg/m^3]
+inline constexpr const char* pressure = "pressure"; ///< p = pi rho^2 / rho^max [Pa]
+// Scratch, recomputed every step.
+inline constexpr const char* rhoTilde = "rhoTilde"; ///< normalised density rho / rho^max
+inline constexpr const char* rhoStar = "rhoStar";   ///< predicted normalised density (Eq. 6)
+inline constexpr const char* alpha = "alpha";       ///< 1/(|G|^2 + Q), the pressure diagonal factor [m^2]
+inline constexpr const char* gradSum = "gradSum";   ///< G = sum f V gradW [1/m]
+inline constexpr const char* accelP = "accelP";     ///< pressure acceleration a^p [m/s^2]
+inline constexpr const char* vOld = "vOld";         ///< v^n during the implicit solve [m/s]
+
+} // namespace poro::field

@@ -1,0 +1,143 @@
+#include "physics/ImplicitSolver.hpp"
+
+#include "core/Parallel.hpp"
+
+#include <Eigen/LU>
+#include "physics/FieldNames.hpp"
+
+namespace poro {
+
+namespace {
+const char* const kRhs = "cgRhs";
+const char* const kUnknown = "cgU";
+const char* const kR = "cgR";
+const char* const kZ = "cgZ";
+const char* const kP = "cgP";
+const char* const kQ = "cgQ";
+const char* const kInverseDiagonal = "cgInverseDiagonal";
+} // namespace
+
+class ImplicitSolver::Operator final : public linalg::BlockOperator {
+public:
+  explicit Operator(const ImplicitSolver& solver) : solver_(solver) {}
+  void apply(const linalg::BlockVector& x, const linalg::BlockVector& y) const override { solver_.apply(x, y); }
+
+private:
+  const ImplicitSolver& solver_;
+};
+
+ImplicitSolver::ImplicitSolver(const ImplicitSettings& settings, std::vector<std::unique_ptr<ImplicitTerm>> terms)
+    : settings_(settings), terms_(std::move(terms)) {}
+
+void ImplicitSolver::registerFields(ParticleSet& set) {
+  set.addVec3(field::deltaV, Restart);
+  set.addVec3(field::vOld);
+  for (const char* name : {kRhs, kUnknown, kR, kZ, kP, kQ}) set.addVec3(name);
+  set.addMat3(kInverseDiagonal);
+}
+
+linalg::BlockVector ImplicitSolver::view(const StepContext& ctx, const char* fieldName) {
+  linalg::BlockVector v;
+  for (std::size_t a : ctx.dynamicSets) {
+    auto& f = ctx.particles[a].vec3(fieldName);
+    v.push_back({f.data(), f.size()});
+  }
+  return v;
+}
+
+void ImplicitSolver::prepare(const StepContext& ctx) {
+  ctx_ = &ctx;
+  enabled_.clear();
+  for (auto& term : terms_)
+    if (term->enabled(ctx)) {
+      term->prepare(ctx);
+      enabled_.push_back(term.get());
+    }
+}
+
+void ImplicitSolver::apply(const linalg::BlockVector& u, const linalg::BlockVector& au) const {
+  for (std::size_t p = 0; p < u.size(); ++p) {
+    const double m = ctx_->particles[ctx_->dynamicSets[p]].mass;
+    const Vec3* in = u[p].data;
+    Vec3* out = au[p].data;
+    parallel::forEach(u[p].size, [&](std::size_t i) { out[i] = m * in[i]; });
+  }
+  for (const ImplicitTerm* term : enabled_) term->addApply(u, au);
+}
+
+void ImplicitSolver::diagonal(const linalg::BlockDiagonal& d) const {
+  for (std::size_t p = 0; p < d.size(); ++p) {
+    const double m = ctx_->particles[ctx_->dynamicSets[p]].mass;
+    Mat3* out = d[p].data;
+    parallel::forEach(d[p].size, [&](std::size_t i) { out[i] = m * Mat3::Identity(); });
+  }
+  for (const ImplicitTerm* term : enabled_) term->addDiagonal(d);
+}
+
+void ImplicitSolver::rhs(const linalg::BlockVector& b) const {
+  for (std::size_t p = 0; p < b.size(); ++p) {
+    const ParticleSet& set = ctx_->particles[ctx_->dynamicSets[p]];
+    const double m = set.mass;
+    const auto& v = set.v();
+    Vec3* out = b[p].data;
+    parallel::forEach(b[p].size, [&](std::size_t i) { out[i] = m * v[i]; });
+  }
+  for (const ImplicitTerm* term : enabled_) term->addRhs(b);
+}
+
+linalg::CgResult ImplicitSolver::solve(const StepContext& ctx) {
+  prepare(ctx);
+  const Vec3 gdt = ctx.dt * ctx.fluid.gravity;
+  linalg::CgResult result;
+  result.converged = true;
+  if (enabled_.empty()) {
+    for (std::size_t a : ctx.dynamicSets) {
+      ParticleSet& set = ctx.particles[a];
+      auto& v = set.v();
+      auto& dv = set.vec3(field::deltaV);
+      parallel::forEach(set.size(), [&](std::size_t i) {
+        dv[i].setZero();
+        v[i] += gdt;
+      });
+    }
+    return result;
+  }
+
+  const linalg::BlockVector b = view(ctx, kRhs), u = view(ctx, kUnknown);
+  rhs(b);
+  for (std::size_t a : ctx.dynamicSets) { // initial guess v^n + dv (METHOD.md §6.5.8)
+    ParticleSet& set = ctx.particles[a];
+    const auto& v = set.v();
+    const auto& dv = set.vec3(field::deltaV);
+    auto& guess = set.vec3(kUnknown);
+    parallel::forEach(set.size(), [&](std::size_t i) { guess[i] = v[i] + dv[i]; });
+  }
+  linalg::BlockDiagonal inverse;
+  if (settings_.preconditioner) {
+    for (std::size_t a : ctx.dynamicSets) {
+      auto& f = ctx.particles[a].mat3(kInverseDiagonal);
+      inverse.push_back({f.data(), f.size()});
+    }
+    diagonal(inverse);
+    for (const auto& part : inverse) {
+      Mat3* blocks = part.data;
+      parallel::forEach(part.size, [&](std::size_t i) { blocks[i] = Mat3(blocks[i].inverse()); });
+    }
+  }
+  const linalg::CgWork work{view(ctx, kR), view(ctx, kZ), view(ctx, kP), view(ctx, kQ)};
+  result = linalg::solveCg(Operator(*this), inverse, b, u, work, {settings_.tolerance, settings_.maxIterations});
+
+  for (std::size_t a : ctx.dynamicSets) { // v* = u + dt g, dv = u - v^n (METHOD.md §6.5.9)
+    ParticleSet& set = ctx.particles[a];
+    auto& v = set.v();
+    auto& dv = set.vec3(field::deltaV);
+    const auto& solution = set.vec3(kUnknown);
+    parallel::forEach(set.size(), [&](std::size_t i) {
+      dv[i] = solution[i] - v[i];
+      v[i] = solution[i] + gdt;
+    });
+  }
+  return result;
+}
+
+} // namespace poro

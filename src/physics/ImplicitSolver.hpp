@@ -1,0 +1,43 @@
+#pragma once
+/// The strongly coupled implicit non-pressure solve in momentum form (METHOD.md §6.5; Eq. 9, 10, 22):
+/// A = M - dt dF/du assembled from the registered terms, never as a matrix; block-Jacobi preconditioned
+/// CG warm-started from v^n + dv; then gravity v* = u + dt g (§6.5.9).
+/// Keys: system/solverDict implicit.{tolerance, maxIterations, preconditioner}.
+
+#include "linalg/ConjugateGradient.hpp"
+#include "physics/ImplicitTerm.hpp"
+#include "physics/SolverSettings.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace poro {
+
+class ImplicitSolver {
+public:
+  /// Terms in the explicit registration order of the Solver.
+  ImplicitSolver(const ImplicitSettings& settings, std::vector<std::unique_ptr<ImplicitTerm>> terms);
+
+  /// Registers dv (restart) and the Krylov scratch fields.
+  static void registerFields(ParticleSet& set);
+
+  /// Replaces v^n by v* for every dynamic set. Returns the CG statistics (0 iterations if no term is on).
+  linalg::CgResult solve(const StepContext& ctx);
+
+  /// The operator u -> A u of the current step (after solve or prepare), for tests.
+  void prepare(const StepContext& ctx);
+  void apply(const linalg::BlockVector& u, const linalg::BlockVector& au) const;
+  void diagonal(const linalg::BlockDiagonal& d) const;
+  void rhs(const linalg::BlockVector& b) const;
+  /// A block vector view over the named Vec3 field of every dynamic set.
+  static linalg::BlockVector view(const StepContext& ctx, const char* fieldName);
+
+private:
+  class Operator;
+  ImplicitSettings settings_;
+  std::vector<std::unique_ptr<ImplicitTerm>> terms_;
+  std::vector<ImplicitTerm*> enabled_;
+  const StepContext* ctx_ = nullptr;
+};
+
+} // namespace poro

@@ -1,0 +1,36 @@
+#pragma once
+/// Porous IISPH pressure solve (METHOD.md §6.6, §6.7; Eq. 5-8): predicted densities, then relaxed Jacobi
+/// sweeps on pi = rho^max p / rho^2, clamped at 0, warm-started, every set updated together.
+/// Keys: system/solverDict pressure.{maxDensityError, minIterations, maxIterations, relaxation, warmStart}.
+
+#include "physics/SolverSettings.hpp"
+#include "physics/StepContext.hpp"
+
+namespace poro {
+
+struct PressureStats {
+  int iterations = 0;
+  double meanError = 0.0; ///< mean compression of the worst set in the last sweep [% of rho^max]
+  double maxError = 0.0;  ///< largest single-particle compression in the last sweep [%]
+  bool converged = false;
+};
+
+class PressureSolver {
+public:
+  explicit PressureSolver(const PressureSettings& settings) : settings_(settings) {}
+
+  /// Registers pi (restart), pressure (output) and the solver's scratch fields.
+  static void registerFields(ParticleSet& set);
+
+  /// rho~* = rho~ + dt [sum f V (v*_a - v*_b).gradW_ab + sum V_k (v*_a - v_k).gradW_ak] (Eq. 6).
+  void predictDensities(const StepContext& ctx) const;
+
+  /// Solves for pi, then v <- v* + dt a^p for every dynamic set. Needs predictDensities first.
+  PressureStats solve(const StepContext& ctx) const;
+
+private:
+  void computeAccelerations(const StepContext& ctx) const;
+  PressureSettings settings_;
+};
+
+} // namespace poro

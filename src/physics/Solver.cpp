@@ -1,0 +1,223 @@
+#include "physics/Solver.hpp"
+
+#include "core/Error.hpp"
+#include "core/Log.hpp"
+#include "core/Parallel.hpp"
+#include "physics/Densities.hpp"
+#include "physics/FieldNames.hpp"
+#include "physics/FluidViscosity.hpp"
+#include "physics/TimeStepSize.hpp"
+#include "sph/BoundaryVolume.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace poro {
+
+namespace {
+
+/// Implicit terms in the order they add to the operator (STYLE.md §5: registration is an explicit list).
+std::vector<std::unique_ptr<ImplicitTerm>> makeImplicitTerms() {
+  std::vector<std::unique_ptr<ImplicitTerm>> terms;
+  terms.push_back(std::make_unique<FluidViscosity>());
+  return terms;
+}
+
+std::string formatDuration(double seconds) {
+  const long long s = static_cast<long long>(std::llround(seconds));
+  std::ostringstream out;
+  out << s / 3600 << ':' << std::setw(2) << std::setfill('0') << (s / 60) % 60 << ':' << std::setw(2)
+      << std::setfill('0') << s % 60;
+  return out.str();
+}
+
+} // namespace
+
+Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, const SolverSettings& settings,
+               const TimeControl& control, const RunState& start)
+    : particles_(std::move(particles)), fluid_(fluid), settings_(settings), control_(control), state_(start),
+      kernel_(particles_.supportRadius()), search_(particles_.supportRadius()),
+      implicit_(settings.implicit, makeImplicitTerms()), pressure_(settings.pressure) {
+  if (settings_.threads > 0) parallel::setThreads(settings_.threads);
+  const double volume = particles_.particleVolume();
+  for (std::size_t s = 0; s < particles_.size(); ++s) {
+    ParticleSet& set = particles_[s];
+    set.particleVolume = volume;
+    switch (set.kind()) {
+    case SetKind::Fluid:
+      set.restDensity = fluid_.density;
+      set.mass = fluid_.density * volume;
+      registerDensityFields(set);
+      PressureSolver::registerFields(set);
+      ImplicitSolver::registerFields(set);
+      dynamicSets_.push_back(s);
+      break;
+    case SetKind::Boundary:
+      // Walls are static; one Morton sort makes their order (and so every sum over them) a function of
+      // their positions alone, identical after a restart.
+      set.permute(search_.mortonOrder(set.x()));
+      computeBoundaryVolumes(set, kernel_);
+      boundarySets_.push_back(s);
+      break;
+    case SetKind::Porous:
+      throw InputError(std::string("particle set '") + set.name() +
+                       "': porous particle sets are not supported by this version of poroSph");
+    }
+  }
+  if (state_.nextDeltaT <= 0.0) state_.nextDeltaT = control_.deltaT;
+}
+
+StepContext Solver::context(double deltaT) {
+  return StepContext{particles_, search_, gradients_, kernel_, fluid_, deltaT, dynamicSets_, boundarySets_};
+}
+
+void Solver::searchNeighbours() {
+  const bool sortNow = settings_.sortInterval > 0 && state_.step % settings_.sortInterval == 0;
+  if (sortNow)
+    for (std::size_t a : dynamicSets_) particles_[a].permute(search_.mortonOrder(particles_[a].x()));
+  std::vector<const std::vector<Vec3>*> positions;
+  std::vector<std::vector<bool>> wanted(particles_.size(), std::vector<bool>(particles_.size(), false));
+  for (std::size_t s = 0; s < particles_.size(); ++s) positions.push_back(&particles_[s].x());
+  for (std::size_t a : dynamicSets_) {
+    for (std::size_t b : dynamicSets_) wanted[a][b] = true;
+    for (std::size_t k : boundarySets_) wanted[a][k] = true;
+  }
+  search_.update(positions, wanted);
+}
+
+void Solver::step(double deltaT) {
+  StepContext ctx = context(deltaT);
+  {
+    ScopedPhase phase(phases_, "search");
+    searchNeighbours();
+  }
+  {
+    ScopedPhase phase(phases_, "densities");
+    computeDensities(ctx, gradients_);
+  }
+  {
+    ScopedPhase phase(phases_, "implicit");
+    report_.implicit = implicit_.solve(ctx);
+    if (!report_.implicit.converged)
+      log::warning("implicit solve reached implicit.maxIterations = " + std::to_string(settings_.implicit.maxIterations) +
+                   " with relative residual " + std::to_string(report_.implicit.relativeResidual));
+  }
+  {
+    ScopedPhase phase(phases_, "pressure");
+    pressure_.predictDensities(ctx);
+    report_.pressure = pressure_.solve(ctx);
+  }
+  {
+    ScopedPhase phase(phases_, "integrate");
+    for (std::size_t a : dynamicSets_) { // symplectic Euler (METHOD.md §6.8)
+      ParticleSet& set = particles_[a];
+      auto& x = set.x();
+      const auto& v = set.v();
+      parallel::forEach(set.size(), [&](std::size_t i) { x[i] += deltaT * v[i]; });
+    }
+    checkFinite();
+    state_.time += deltaT;
+    ++state_.step;
+    report_.deltaT = deltaT;
+    report_.maxSpeed = maxSpeed();
+    state_.nextDeltaT =
+        cflStepSize(control_, report_.maxSpeed, particles_.spacing(), deltaT, report_.pressure.iterations);
+  }
+}
+
+double Solver::maxSpeed() const {
+  double result = 0.0;
+  for (std::size_t s = 0; s < particles_.size(); ++s) {
+    const auto& v = particles_[s].v();
+    result = std::max(result, parallel::max(v.size(), 0.0, [&](std::size_t i) { return v[i].norm(); }));
+  }
+  return result;
+}
+
+void Solver::checkFinite() const {
+  for (std::size_t a : dynamicSets_) {
+    const ParticleSet& set = particles_[a];
+    const auto& x = set.x();
+    const auto& v = set.v();
+    const std::size_t bad =
+        parallel::sum<std::size_t>(set.size(), [&](std::size_t i) -> std::size_t { return !(x[i].allFinite() && v[i].allFinite()); });
+    if (bad == 0) continue;
+    std::size_t first = 0;
+    while (first < set.size() && x[first].allFinite() && v[first].allFinite()) ++first;
+    std::ostringstream msg;
+    msg << "step " << state_.step + 1 << " (time " << state_.time << " s): " << bad << " " << set.name()
+        << " particle(s) have non-finite position or velocity, first id " << set.integer(field::id)[first]
+        << "; reduce deltaT or maxCourant in system/controlDict";
+    throw NumericalError(msg.str());
+  }
+}
+
+double Solver::stepSizeFor(double deltaT) const {
+  // Adjustable steps land exactly on write times and endTime (OpenFOAM's adjustTimeStep habit).
+  if (!control_.adjustTimeStep) return deltaT;
+  double target = control_.endTime;
+  if (control_.writeControl == TimeControl::WriteControl::RunTime) {
+    const double k = std::floor(state_.time / control_.writeInterval * (1.0 + 1e-12) + 1e-9);
+    target = std::min(target, (k + 1.0) * control_.writeInterval);
+  }
+  return stepTowards(state_.time, target, deltaT);
+}
+
+double Solver::endSlack() const {
+  // Fixed steps accumulate round-off in t; adjustable steps land on endTime exactly (stepTowards).
+  return control_.adjustTimeStep ? 1e-9 * std::max(1.0, control_.endTime) : 0.5 * control_.deltaT;
+}
+
+bool Solver::isWriteStep(double previousTime) const {
+  if (control_.writeControl == TimeControl::WriteControl::TimeStep)
+    return state_.step % static_cast<long long>(control_.writeInterval) == 0;
+  // A write time t_w = k * writeInterval was reached in this step (half a step of slack for fixed steps).
+  const double slack = 0.5 * report_.deltaT;
+  const double before = std::floor((previousTime + slack) / control_.writeInterval);
+  const double after = std::floor((state_.time + slack) / control_.writeInterval);
+  return after > before;
+}
+
+void Solver::run(const Writer& write) {
+  const Timer clock;
+  const double startTime = state_.time;
+  log::info("Starting time loop\n");
+  while (state_.time < control_.endTime - endSlack()) {
+    const double previousTime = state_.time;
+    const double dt = stepSizeFor(state_.nextDeltaT);
+    step(dt);
+    const StepReport& r = report_;
+    std::ostringstream out;
+    out << std::setprecision(6) << "Time = " << state_.time << "  (step " << state_.step << ")\n"
+        << "deltaT = " << r.deltaT << "  max|v| = " << r.maxSpeed << " m/s\n"
+        << "pressure: " << r.pressure.iterations << " sweeps, density error " << r.pressure.meanError
+        << " % (max " << r.pressure.maxError << " %)" << (r.pressure.converged ? "" : "  NOT CONVERGED") << '\n'
+        << "implicit: " << r.implicit.iterations << " CG iterations, residual " << r.implicit.relativeResidual << '\n';
+    const double elapsed = clock.seconds();
+    const double done = (state_.time - startTime) / (control_.endTime - startTime);
+    out << "ExecutionTime = " << std::setprecision(4) << elapsed << " s  ClockTime = " << std::llround(elapsed)
+        << " s  ETA = " << formatDuration(done > 0 ? elapsed * (1.0 - done) / done : 0.0) << '\n';
+    log::info(out.str());
+    if (!r.pressure.converged)
+      log::warning("pressure solve reached pressure.maxIterations = " + std::to_string(settings_.pressure.maxIterations) +
+                   " with density error " + std::to_string(r.pressure.meanError) +
+                   " %; consider a smaller deltaT or maxCourant");
+    const bool last = !(state_.time < control_.endTime - endSlack());
+    if (isWriteStep(previousTime) || last) {
+      ScopedPhase phase(phases_, "output");
+      write(*this);
+    }
+  }
+  std::ostringstream summary;
+  summary << "Phase breakdown over " << state_.step << " steps (wall time):\n";
+  const double total = phases_.total();
+  for (const auto& [name, seconds] : phases_.phases())
+    summary << "  " << std::left << std::setw(10) << name << std::right << std::setw(10) << std::fixed
+            << std::setprecision(3) << seconds << " s  " << std::setw(5) << std::setprecision(1)
+            << (total > 0 ? 100.0 * seconds / total : 0.0) << " %\n";
+  log::info(summary.str());
+  log::info("End\n");
+}
+
+} // namespace poro

@@ -1,0 +1,37 @@
+#pragma once
+/// What every part of one time step sees (STYLE.md §5: no globals; everything arrives through here).
+
+#include "physics/FluidProperties.hpp"
+#include "sph/Kernel.hpp"
+#include "sph/NeighbourSearch.hpp"
+#include "sph/ParticleSystem.hpp"
+
+#include <vector>
+
+namespace poro {
+
+/// Per-pair kernel gradient factors s_ab (gradW_ab = s_ab x_ab), stored in the order of the neighbour
+/// lists so the iterative solvers do not re-evaluate the kernel.
+class PairGradients {
+public:
+  void resize(std::size_t sets) { factors_.assign(sets * sets, {}); sets_ = sets; }
+  std::vector<double>& of(std::size_t a, std::size_t b) { return factors_[a * sets_ + b]; }
+  const std::vector<double>& of(std::size_t a, std::size_t b) const { return factors_[a * sets_ + b]; }
+
+private:
+  std::size_t sets_ = 0;
+  std::vector<std::vector<double>> factors_;
+};
+
+struct StepContext {
+  ParticleSystem& particles;
+  const NeighbourSearch& search;
+  const PairGradients& gradients;
+  const CubicKernel& kernel;
+  const FluidProperties& fluid;
+  double dt;                        ///< the step size of this step [s]
+  std::vector<std::size_t> dynamicSets;  ///< fluid and porous sets: the unknowns
+  std::vector<std::size_t> boundarySets; ///< walls: known positions and velocities
+};
+
+} // namespace poro

@@ -1,0 +1,48 @@
+#include "physics/TimeControl.hpp"
+
+#include "core/Dictionary.hpp"
+
+#include <sstream>
+
+namespace poro {
+
+TimeControl TimeControl::read(const Dictionary& dict) {
+  TimeControl t;
+  t.startFrom = dict.getWord("startFrom", {"startTime", "latestTime"}, "startTime") == "latestTime"
+                    ? StartFrom::LatestTime
+                    : StartFrom::StartTime;
+  t.startTime = dict.getReal("startTime", 0.0, Range::nonNegative());
+  t.endTime = dict.getReal("endTime", Range::positive());
+  if (t.endTime <= t.startTime) {
+    std::ostringstream msg;
+    msg << "expected endTime > startTime (" << t.startTime << "), got " << t.endTime;
+    dict.fail("endTime", msg.str());
+  }
+  t.adjustTimeStep = dict.getBool("adjustTimeStep", false);
+  t.iterationControl = dict.getBool("iterationControl", false);
+  t.maxCourant = dict.getReal("maxCourant", t.maxCourant, Range{0.0, 1.0, true, false});
+  t.minDeltaT = dict.getReal("minDeltaT", t.minDeltaT, Range::positive());
+  t.maxDeltaT = dict.getReal("maxDeltaT", t.maxDeltaT, Range::positive());
+  if (t.minDeltaT > t.maxDeltaT) {
+    std::ostringstream msg;
+    msg << "expected minDeltaT <= maxDeltaT (" << t.maxDeltaT << "), got " << t.minDeltaT;
+    dict.fail("minDeltaT", msg.str());
+  }
+  t.deltaT = dict.getReal("deltaT", Range::positive());
+  if (t.adjustTimeStep && (t.deltaT < t.minDeltaT || t.deltaT > t.maxDeltaT)) {
+    std::ostringstream msg;
+    msg << "expected deltaT within [minDeltaT, maxDeltaT] = [" << t.minDeltaT << ", " << t.maxDeltaT
+        << "] with adjustTimeStep, got " << t.deltaT;
+    dict.fail("deltaT", msg.str());
+  }
+  t.writeControl = dict.getWord("writeControl", {"timeStep", "runTime"}, "runTime") == "timeStep"
+                       ? WriteControl::TimeStep
+                       : WriteControl::RunTime;
+  if (t.writeControl == WriteControl::TimeStep)
+    t.writeInterval = static_cast<double>(dict.getInt("writeInterval", Range::atLeast(1)));
+  else
+    t.writeInterval = dict.getReal("writeInterval", Range::positive());
+  return t;
+}
+
+} // namespace poro

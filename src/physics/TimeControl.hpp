@@ -1,0 +1,30 @@
+#pragma once
+/// The time keys of system/controlDict (METHOD.md §6.9, §9; ARCHITECTURE.md): run length, step size
+/// control and write schedule. Output format keys are read by io::OutputSettings from the same file.
+
+#include <string>
+
+namespace poro {
+class Dictionary;
+
+struct TimeControl {
+  enum class StartFrom { StartTime, LatestTime };
+  enum class WriteControl { TimeStep, RunTime };
+
+  StartFrom startFrom = StartFrom::StartTime;
+  double startTime = 0.0;        ///< [s]
+  double endTime = 0.0;          ///< [s], > startTime, required
+  double deltaT = 0.0;           ///< initial or fixed step [s], > 0, required
+  bool adjustTimeStep = false;   ///< CFL-adaptive step
+  bool iterationControl = false; ///< scale the step by pressure iteration count
+  double maxCourant = 0.2;       ///< per particle diameter, (0, 1]
+  double minDeltaT = 1e-4;       ///< [s]
+  double maxDeltaT = 5e-3;       ///< [s]
+  WriteControl writeControl = WriteControl::RunTime;
+  double writeInterval = 0.0;    ///< seconds (runTime) or steps (timeStep), > 0, required
+
+  /// Reads and validates the time keys (does not check for unknown keys: the file has output keys too).
+  static TimeControl read(const Dictionary& dict);
+};
+
+} // namespace poro

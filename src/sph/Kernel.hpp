@@ -1,0 +1,46 @@
+#pragma once
+/// Cubic spline kernel (Monaghan) with support radius H = 4r, evaluated analytically (METHOD.md §2.1).
+
+#include "core/Types.hpp"
+
+#include <cmath>
+
+namespace poro {
+
+class CubicKernel {
+public:
+  /// @param supportRadius H [m] (= 4 r).
+  explicit CubicKernel(double supportRadius)
+      : h_(supportRadius), invH_(1.0 / supportRadius), kW_(8.0 / (M_PI * h_ * h_ * h_)),
+        kGrad_(48.0 / (M_PI * h_ * h_ * h_)) {}
+
+  double supportRadius() const { return h_; }
+  /// W(0) = 8/(pi H^3) = 1/(8 pi r^3).
+  double w0() const { return kW_; }
+
+  /// W at distance `dist` [1/m^3].
+  double w(double dist) const {
+    const double q = dist * invH_;
+    if (q > 1.0) return 0.0;
+    if (q <= 0.5) return kW_ * (6.0 * q * q * q - 6.0 * q * q + 1.0);
+    const double s = 1.0 - q;
+    return 2.0 * kW_ * s * s * s;
+  }
+  double w(const Vec3& x) const { return w(x.norm()); }
+
+  /// Gradient of W with respect to the first particle's position for x = x_a - x_b [1/m^4].
+  Vec3 grad(const Vec3& x) const { return gradFactor(x.norm()) * x; }
+
+  /// Scalar s(dist) with grad(x) = s(||x||) x, so pair loops can store one number per pair.
+  double gradFactor(double dist) const {
+    const double q = dist * invH_;
+    if (dist <= 1e-9 || q > 1.0) return 0.0;
+    const double g = q <= 0.5 ? q * (3.0 * q - 2.0) : -(1.0 - q) * (1.0 - q);
+    return kGrad_ * g * invH_ / dist;
+  }
+
+private:
+  double h_, invH_, kW_, kGrad_;
+};
+
+} // namespace poro

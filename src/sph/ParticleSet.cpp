@@ -1,0 +1,123 @@
+#include "sph/ParticleSet.hpp"
+
+#include <stdexcept>
+
+namespace poro {
+
+const char* toString(SetKind kind) {
+  switch (kind) {
+  case SetKind::Fluid: return "fluid";
+  case SetKind::Porous: return "porous";
+  case SetKind::Boundary: return "boundary";
+  }
+  return "?";
+}
+
+struct ParticleSet::FieldBase {
+  FieldInfo info;
+  virtual ~FieldBase() = default;
+  virtual void resize(std::size_t n) = 0;
+  virtual void permute(const std::vector<Index>& order) = 0;
+};
+
+template <class T>
+struct ParticleSet::Field final : FieldBase {
+  std::vector<T> data;
+  void resize(std::size_t n) override { data.resize(n, T::Zero()); }
+  void permute(const std::vector<Index>& order) override {
+    std::vector<T> sorted(data.size());
+    for (std::size_t i = 0; i < order.size(); ++i) sorted[i] = data[static_cast<std::size_t>(order[i])];
+    data.swap(sorted);
+  }
+};
+
+// Scalars have no T::Zero(); specialise the value-initialising resize.
+template <>
+void ParticleSet::Field<Real>::resize(std::size_t n) { data.resize(n, 0.0); }
+template <>
+void ParticleSet::Field<std::int64_t>::resize(std::size_t n) { data.resize(n, 0); }
+
+ParticleSet::ParticleSet(std::string name, SetKind kind) : name_(std::move(name)), kind_(kind) {
+  addInt(field::id, Restart);
+  addInt(field::objectId, Restart);
+  x_ = &addVec3(field::x, Restart);
+  v_ = &addVec3(field::v, Restart);
+}
+
+ParticleSet::ParticleSet(ParticleSet&&) noexcept = default;
+ParticleSet& ParticleSet::operator=(ParticleSet&&) noexcept = default;
+ParticleSet::~ParticleSet() = default;
+
+void ParticleSet::resize(std::size_t n) {
+  for (auto& f : fields_) f->resize(n);
+  size_ = n;
+}
+
+ParticleSet::FieldBase* ParticleSet::find(const std::string& name) const {
+  for (const auto& f : fields_)
+    if (f->info.name == name) return f.get();
+  return nullptr;
+}
+
+template <class T>
+std::vector<T>& ParticleSet::add(const std::string& name, FieldType type, FieldRole role) {
+  if (FieldBase* existing = find(name)) {
+    if (existing->info.type != type)
+      throw std::logic_error("particle set '" + name_ + "': field '" + name + "' registered with another type");
+    if (role > existing->info.role) existing->info.role = role;
+    return static_cast<Field<T>*>(existing)->data;
+  }
+  auto created = std::make_unique<Field<T>>();
+  created->info = {name, type, role};
+  created->resize(size_);
+  auto& data = created->data;
+  fields_.push_back(std::move(created));
+  return data;
+}
+
+template <class T>
+std::vector<T>& ParticleSet::get(const std::string& name, FieldType type) const {
+  FieldBase* f = find(name);
+  if (!f || f->info.type != type)
+    throw std::logic_error("particle set '" + name_ + "' has no field '" + name + "' of the requested type");
+  return static_cast<Field<T>*>(f)->data;
+}
+
+std::vector<Real>& ParticleSet::addReal(const std::string& n, FieldRole r) { return add<Real>(n, FieldType::Real, r); }
+std::vector<Vec3>& ParticleSet::addVec3(const std::string& n, FieldRole r) { return add<Vec3>(n, FieldType::Vec3, r); }
+std::vector<Mat3>& ParticleSet::addMat3(const std::string& n, FieldRole r) { return add<Mat3>(n, FieldType::Mat3, r); }
+std::vector<std::int64_t>& ParticleSet::addInt(const std::string& n, FieldRole r) {
+  return add<std::int64_t>(n, FieldType::Int, r);
+}
+
+bool ParticleSet::has(const std::string& name) const { return find(name) != nullptr; }
+
+const ParticleSet::FieldInfo* ParticleSet::info(const std::string& name) const {
+  const FieldBase* f = find(name);
+  return f ? &f->info : nullptr;
+}
+
+std::vector<ParticleSet::FieldInfo> ParticleSet::fields() const {
+  std::vector<FieldInfo> result;
+  result.reserve(fields_.size());
+  for (const auto& f : fields_) result.push_back(f->info);
+  return result;
+}
+
+std::vector<Real>& ParticleSet::real(const std::string& n) { return get<Real>(n, FieldType::Real); }
+const std::vector<Real>& ParticleSet::real(const std::string& n) const { return get<Real>(n, FieldType::Real); }
+std::vector<Vec3>& ParticleSet::vec3(const std::string& n) { return get<Vec3>(n, FieldType::Vec3); }
+const std::vector<Vec3>& ParticleSet::vec3(const std::string& n) const { return get<Vec3>(n, FieldType::Vec3); }
+std::vector<Mat3>& ParticleSet::mat3(const std::string& n) { return get<Mat3>(n, FieldType::Mat3); }
+const std::vector<Mat3>& ParticleSet::mat3(const std::string& n) const { return get<Mat3>(n, FieldType::Mat3); }
+std::vector<std::int64_t>& ParticleSet::integer(const std::string& n) { return get<std::int64_t>(n, FieldType::Int); }
+const std::vector<std::int64_t>& ParticleSet::integer(const std::string& n) const {
+  return get<std::int64_t>(n, FieldType::Int);
+}
+
+void ParticleSet::permute(const std::vector<Index>& order) {
+  if (order.size() != size_) throw std::logic_error("ParticleSet::permute: order has the wrong length");
+  for (auto& f : fields_) f->permute(order);
+}
+
+} // namespace poro

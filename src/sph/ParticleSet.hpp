@@ -1,0 +1,104 @@
+#pragma once
+/// Structure-of-arrays field registry for one particle set (ARCHITECTURE.md "One field registry").
+/// Every per-particle array lives here, so spatial sorting, output and restart act on all fields at once.
+
+#include "core/Types.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace poro {
+
+/// What a particle set models (METHOD.md §1).
+enum class SetKind { Fluid, Porous, Boundary };
+const char* toString(SetKind kind);
+
+enum class FieldType { Real, Vec3, Mat3, Int };
+
+/// What happens to a field besides sorting: written to the .vtp files for viewing, and/or needed to
+/// continue a run (written, and read back on restart).
+enum FieldRole : unsigned { Scratch = 0u, Output = 1u, Restart = 3u /* restart fields are also output */ };
+
+/// Names of the fields every set has or that several parts of the code share.
+namespace field {
+inline constexpr const char* id = "id";             ///< persistent particle id (Int)
+inline constexpr const char* objectId = "objectId"; ///< sampled region / body id (Int)
+inline constexpr const char* x = "x";               ///< position [m] (Vec3, the point coordinates)
+inline constexpr const char* v = "v";               ///< velocity [m/s] (Vec3)
+} // namespace field
+
+class ParticleSet {
+public:
+  struct FieldInfo {
+    std::string name;
+    FieldType type;
+    FieldRole role;
+  };
+
+  ParticleSet(std::string name, SetKind kind);
+  ParticleSet(const ParticleSet&) = delete;
+  ParticleSet& operator=(const ParticleSet&) = delete;
+  ParticleSet(ParticleSet&&) noexcept;
+  ParticleSet& operator=(ParticleSet&&) noexcept;
+  ~ParticleSet();
+
+  const std::string& name() const { return name_; }
+  SetKind kind() const { return kind_; }
+  std::size_t size() const { return size_; }
+
+  /// Resizes every field; new entries are value-initialised (zero).
+  void resize(std::size_t n);
+
+  /// Registers a field (or returns the existing one of the same type; a different type is a logic error).
+  /// References stay valid for the lifetime of the set, across resize and permute.
+  std::vector<Real>& addReal(const std::string& name, FieldRole role = Scratch);
+  std::vector<Vec3>& addVec3(const std::string& name, FieldRole role = Scratch);
+  std::vector<Mat3>& addMat3(const std::string& name, FieldRole role = Scratch);
+  std::vector<std::int64_t>& addInt(const std::string& name, FieldRole role = Scratch);
+
+  bool has(const std::string& name) const;
+  const FieldInfo* info(const std::string& name) const;
+  std::vector<FieldInfo> fields() const;
+
+  std::vector<Real>& real(const std::string& name);
+  const std::vector<Real>& real(const std::string& name) const;
+  std::vector<Vec3>& vec3(const std::string& name);
+  const std::vector<Vec3>& vec3(const std::string& name) const;
+  std::vector<Mat3>& mat3(const std::string& name);
+  const std::vector<Mat3>& mat3(const std::string& name) const;
+  std::vector<std::int64_t>& integer(const std::string& name);
+  const std::vector<std::int64_t>& integer(const std::string& name) const;
+
+  /// Reorders every field: new slot i receives old slot order[i]. `order` must be a permutation.
+  void permute(const std::vector<Index>& order);
+
+  /// Shorthands for the position and velocity fields every set has.
+  std::vector<Vec3>& x() { return *x_; }
+  const std::vector<Vec3>& x() const { return *x_; }
+  std::vector<Vec3>& v() { return *v_; }
+  const std::vector<Vec3>& v() const { return *v_; }
+
+  /// Per-set physical constants (METHOD.md §3): sampling volume V = (2r)^3, mass per particle and
+  /// the density limit rho^max of the pressure constraint.
+  double particleVolume = 0.0;
+  double mass = 0.0;
+  double restDensity = 0.0;
+
+private:
+  struct FieldBase;
+  template <class T> struct Field;
+  FieldBase* find(const std::string& name) const;
+  template <class T> std::vector<T>& add(const std::string& name, FieldType type, FieldRole role);
+  template <class T> std::vector<T>& get(const std::string& name, FieldType type) const;
+
+  std::string name_;
+  SetKind kind_;
+  std::size_t size_ = 0;
+  std::vector<std::unique_ptr<FieldBase>> fields_;
+  std::vector<Vec3>* x_ = nullptr;
+  std::vector<Vec3>* v_ = nullptr;
+};
+
+} // namespace poro
