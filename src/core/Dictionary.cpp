@@ -167,6 +167,12 @@ struct Dictionary::Impl {
   Entry require(const std::string& key) const {
     markKnown(key);
     if (auto e = find(key)) return *e;
+    // A misspelt key is the likely cause: name it at its own line rather than report the key missing.
+    for (const auto& kv : node) {
+      const std::string& present = kv.first.Scalar();
+      if (!known->count({prefix, present}) && closest(present, {key}) == key)
+        throw InputError(at(lineOf(kv.first)) + "unknown key '" + path(present) + "'; did you mean '" + key + "'?");
+    }
     throw InputError(at(line) + "missing required key '" + path(key) + "'");
   }
 

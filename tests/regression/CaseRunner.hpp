@@ -1,0 +1,82 @@
+#pragma once
+/// A tutorial copied to a scratch directory, edited to a coarse resolution and run through the real
+/// executables, as a user would (tests/regression).
+
+#include "core/Types.hpp"
+#include "io/TimeDirectory.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+namespace poro::test {
+
+class CaseRunner {
+public:
+  /// Copies tutorials/<tutorial> to a fresh scratch directory named after the running test.
+  explicit CaseRunner(const std::string& tutorial) {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = std::filesystem::temp_directory_path() /
+           ("porosph_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+    std::filesystem::copy(std::filesystem::path(POROSPH_TUTORIALS) / tutorial, dir_,
+                          std::filesystem::copy_options::recursive);
+  }
+  ~CaseRunner() {
+    if (!::testing::Test::HasFailure()) std::filesystem::remove_all(dir_);
+  }
+
+  const std::filesystem::path& dir() const { return dir_; }
+
+  /// Replaces the text `from` by `to` in a case file (exactly one occurrence expected).
+  void replace(const std::string& file, const std::string& from, const std::string& to) {
+    std::string text = read(file);
+    const auto at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << file << " has no '" << from << "'";
+    text.replace(at, from.size(), to);
+    write(file, text);
+  }
+
+  /// Sets a top-level `key: value` line of a YAML dictionary.
+  void setKey(const std::string& file, const std::string& key, const std::string& value) {
+    std::string text = read(file);
+    const std::regex line("^" + key + ":.*$", std::regex::multiline);
+    ASSERT_TRUE(std::regex_search(text, line)) << file << " has no key " << key;
+    write(file, std::regex_replace(text, line, key + ": " + value));
+  }
+
+  std::string read(const std::string& file) const {
+    std::ifstream in(dir_ / file);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+  void write(const std::string& file, const std::string& text) const { std::ofstream(dir_ / file) << text; }
+
+  /// Runs an executable on the case with its output in log.<name>; returns its exit code.
+  int run(const std::string& executable, const std::string& arguments = "") const {
+    const std::string name = std::filesystem::path(executable).filename().string();
+    const std::string command = "'" + executable + "' -case '" + dir_.string() + "' " + arguments + " > '" +
+                                (dir_ / ("log." + name)).string() + "' 2>&1";
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  int sample() const { return run(POROSPH_SAMPLER); }
+  int solve(const std::string& arguments = "-threads 2") const { return run(POROSPH_SOLVER, arguments); }
+
+  ParticleSystem particles(const std::string& time, double radius) const { return readParticles(dir_, time, radius); }
+
+private:
+  std::filesystem::path dir_;
+};
+
+} // namespace poro::test

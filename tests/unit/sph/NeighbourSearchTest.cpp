@@ -1,0 +1,373 @@
+// Neighbour search (METHOD.md §6.1): lists equal a brute-force O(N^2) search for any thread count, Morton
+// sorting permutes every registered field and changes nothing else.
+#include "sph/NeighbourSearch.hpp"
+
+#include "core/Error.hpp"
+#include "core/Parallel.hpp"
+#include "sph/ParticleSet.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <random>
+#include <tuple>
+#include <vector>
+
+namespace poro {
+namespace {
+
+using Positions = std::vector<Vec3>;
+using Lists = std::vector<std::vector<Index>>; // neighbours of every particle, in list order
+
+/// Every b of xb with ||xa_i - xb_b|| < H (same floating-point predicate as the contract: squared
+/// distance < H^2), excluding b = i when the sets are the same.
+Lists bruteForce(const Positions& xa, const Positions& xb, double h, bool self) {
+  Lists result(xa.size());
+  for (std::size_t i = 0; i < xa.size(); ++i)
+    for (std::size_t j = 0; j < xb.size(); ++j)
+      if (!(self && i == j) && (xa[i] - xb[j]).squaredNorm() < h * h) result[i].push_back(static_cast<Index>(j));
+  return result;
+}
+
+Lists toLists(const NeighbourList& list) {
+  Lists result(list.particles());
+  for (std::size_t i = 0; i < list.particles(); ++i) {
+    EXPECT_EQ(list.offset(i), static_cast<std::size_t>(list.of(i).begin() - list.of(0).begin()));
+    for (Index j : list.of(i)) result[i].push_back(j);
+  }
+  return result;
+}
+
+/// Same neighbour sets per particle (the order of a list is the search's own, fixed order).
+void expectSameSets(Lists found, Lists expected, const char* what) {
+  ASSERT_EQ(found.size(), expected.size()) << what;
+  std::size_t mismatches = 0;
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    std::sort(found[i].begin(), found[i].end());
+    ASSERT_TRUE(std::adjacent_find(found[i].begin(), found[i].end()) == found[i].end()) << what << ": duplicate in " << i;
+    std::sort(expected[i].begin(), expected[i].end());
+    if (found[i] != expected[i] && ++mismatches <= 5)
+      ADD_FAILURE() << what << ": particle " << i << " has " << found[i].size() << " neighbours, brute force "
+                    << expected[i].size();
+  }
+  EXPECT_EQ(mismatches, 0u) << what;
+}
+
+/// Restores the thread count a test changed.
+class ThreadGuard {
+public:
+  ThreadGuard() : threads_(parallel::threads()) {}
+  ~ThreadGuard() { parallel::setThreads(threads_); }
+
+private:
+  int threads_;
+};
+
+/// Searches all wanted pairs with 1 and with 2 threads; checks both against brute force and against each other
+/// (identical lists in identical order).
+void checkAgainstBruteForce(const std::vector<const Positions*>& sets, const std::vector<std::vector<bool>>& wanted,
+                            double h) {
+  ThreadGuard guard;
+  std::vector<Lists> byThreads[2];
+  for (int t = 1; t <= 2; ++t) {
+    parallel::setThreads(t);
+    NeighbourSearch search(h);
+    search.update(sets, wanted);
+    for (std::size_t a = 0; a < sets.size(); ++a)
+      for (std::size_t b = 0; b < sets.size(); ++b) {
+        const NeighbourList& list = search.list(a, b);
+        if (!wanted[a][b]) {
+          EXPECT_EQ(list.totalPairs(), 0u) << a << "->" << b << " was not requested";
+          EXPECT_EQ(list.particles(), 0u) << a << "->" << b << " was not requested";
+          byThreads[t - 1].push_back({});
+          continue;
+        }
+        ASSERT_EQ(list.particles(), sets[a]->size());
+        const Lists found = toLists(list);
+        const std::string what = std::to_string(a) + "->" + std::to_string(b) + ", " + std::to_string(t) + " thread(s)";
+        expectSameSets(found, bruteForce(*sets[a], *sets[b], h, a == b), what.c_str());
+        byThreads[t - 1].push_back(found);
+      }
+  }
+  EXPECT_TRUE(byThreads[0] == byThreads[1]) << "lists differ between 1 and 2 threads";
+}
+
+Positions randomPoints(std::size_t n, const Vec3& lo, const Vec3& hi, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Positions x(n);
+  for (auto& p : x) p = lo + Vec3(u(rng), u(rng), u(rng)).cwiseProduct(hi - lo);
+  return x;
+}
+
+TEST(NeighbourSearch, RandomPointsOneSet) {
+  const double h = 0.04;
+  // ~30 neighbours per particle, several chunks of the parallel build.
+  Positions x = randomPoints(3000, Vec3::Zero(), Vec3(0.3, 0.3, 0.3), 1);
+  // Pin the grid origin to 0 (the lower corner of the bounding box) and put points exactly on cell faces,
+  // edges and corners k H, plus pairs at (nearly, in floating point) distance H across them.
+  x.emplace_back(0.0, 0.0, 0.0);
+  for (int k = 1; k <= 6; ++k) {
+    x.emplace_back(k * h, 0.1, 0.1);
+    x.emplace_back(k * h, k * h, 0.2);
+    x.emplace_back(k * h, k * h, k * h);
+    x.emplace_back(k * h + h, k * h, k * h);
+    x.emplace_back(0.05, k * h, 0.05 + h);
+  }
+  checkAgainstBruteForce({&x}, {{true}}, h);
+}
+
+TEST(NeighbourSearch, PairsAtExactlyHAreExcluded) {
+  // Dyadic coordinates and H = 1/4: every difference and squared distance is exact, so pairs at exactly H
+  // are exactly H apart and must be missing, while pairs a hair closer are present.
+  const double h = 0.25;
+  Positions x;
+  for (int k = 0; k < 6; ++k)
+    for (int j = 0; j < 6; ++j)
+      for (int i = 0; i < 6; ++i) x.emplace_back(0.125 * i, 0.125 * j, 0.25 * k); // H/2 and H spacings
+  x.emplace_back(0.25 - 1.0 / 1024, 0.0, 0.5); // just inside H of (0, 0, 0.5)
+  checkAgainstBruteForce({&x}, {{true}}, h);
+  NeighbourSearch search(h);
+  search.update({&x}, {{true}});
+  const auto& list = search.list(0, 0);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    for (Index j : list.of(i)) ASSERT_LT((x[i] - x[static_cast<std::size_t>(j)]).norm(), h);
+  // (0,0,0): 6 x 6 points of spacing H/2 in its plane and in the planes at +-H: only (H/2,0,0), (0,H/2,0),
+  // (H/2,H/2,0) are strictly inside.
+  EXPECT_EQ(list.of(0).size(), 3u);
+}
+
+TEST(NeighbourSearch, PairsWithinRoundOffOfHAcrossCells) {
+  // Coordinates accumulated as h + h + ... (not k h) along one axis from 0: some consecutive pairs are one ulp
+  // closer than H in floating point (so they are neighbours), yet their coordinates divided by H round into
+  // cells two apart (e.g. 0.7999999999999999 and 0.8999999999999999 for H = 0.1: cells 7 and 9). A grid whose
+  // cells are exactly H wide misses such pairs.
+  int straddling = 0;
+  for (double h : {0.1, 0.05}) {
+    Positions row;
+    double acc = 0.0;
+    for (int k = 0; k <= 40; ++k, acc += h) row.push_back(Vec3(acc, 0.0, 0.0));
+    for (std::size_t k = 0; k + 1 < row.size(); ++k)
+      if ((row[k + 1] - row[k]).squaredNorm() < h * h &&
+          std::floor(row[k + 1].x() * (1.0 / h)) - std::floor(row[k].x() * (1.0 / h)) >= 2.0)
+        ++straddling; // cell index as x * (1/H), the usual way a grid computes it
+    for (int axis = 0; axis < 3; ++axis) {
+      Positions x;
+      for (const Vec3& p : row) {
+        Vec3 q = Vec3::Zero();
+        q[axis] = p.x();
+        x.push_back(q);
+      }
+      checkAgainstBruteForce({&x}, {{true}}, h);
+    }
+  }
+  EXPECT_GT(straddling, 0) << "the input no longer contains the round-off case it is meant to test";
+}
+
+TEST(NeighbourSearch, LatticeInput) {
+  const double r = 0.01, h = 4.0 * r, spacing = 2.0 * r;
+  Positions x;
+  for (int k = 0; k < 12; ++k)
+    for (int j = 0; j < 12; ++j)
+      for (int i = 0; i < 12; ++i) x.emplace_back(0.31 + spacing * i, -0.07 + spacing * j, 1.3 + spacing * k);
+  checkAgainstBruteForce({&x}, {{true}}, h);
+}
+
+TEST(NeighbourSearch, TwoSetsAndAnUnwantedPair) {
+  const double h = 0.04;
+  const Positions a = randomPoints(2000, Vec3::Zero(), Vec3(0.25, 0.25, 0.25), 2);
+  const Positions b = randomPoints(1500, Vec3(0.1, 0.05, 0.1), Vec3(0.4, 0.3, 0.3), 3); // partial overlap
+  // a->a, a->b, b->a wanted; b->b is not and must stay empty.
+  checkAgainstBruteForce({&a, &b}, {{true, true}, {true, false}}, h);
+  // A lattice set together with a random one.
+  Positions lattice;
+  for (int k = 0; k < 8; ++k)
+    for (int j = 0; j < 8; ++j)
+      for (int i = 0; i < 8; ++i) lattice.emplace_back(0.01 + 0.02 * i, 0.01 + 0.02 * j, -0.01 - 0.02 * k);
+  checkAgainstBruteForce({&lattice, &a}, {{true, true}, {true, true}}, h);
+}
+
+TEST(NeighbourSearch, EmptySets) {
+  const double h = 0.04;
+  const Positions empty;
+  const Positions some = randomPoints(100, Vec3::Zero(), Vec3(0.1, 0.1, 0.1), 4);
+  NeighbourSearch search(h);
+  search.update({&empty}, {{true}});
+  EXPECT_EQ(search.list(0, 0).particles(), 0u);
+  EXPECT_EQ(search.list(0, 0).totalPairs(), 0u);
+  search.update({&empty, &some}, {{true, true}, {true, true}});
+  EXPECT_EQ(search.list(0, 1).particles(), 0u);
+  EXPECT_EQ(search.list(1, 0).particles(), some.size());
+  EXPECT_EQ(search.list(1, 0).totalPairs(), 0u);
+  EXPECT_GT(search.list(1, 1).totalPairs(), 0u);
+  checkAgainstBruteForce({&empty, &some}, {{true, true}, {true, true}}, h);
+  EXPECT_TRUE(search.mortonOrder(empty).empty());
+}
+
+TEST(NeighbourSearch, NonFinitePositionThrows) {
+  NeighbourSearch search(0.04);
+  const double bad[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                        -std::numeric_limits<double>::infinity()};
+  for (double v : bad) {
+    Positions x = randomPoints(50, Vec3::Zero(), Vec3(0.1, 0.1, 0.1), 5);
+    const Positions fine = x;
+    x[17].y() = v;
+    EXPECT_THROW(search.update({&x}, {{true}}), NumericalError);
+    EXPECT_THROW(search.update({&fine, &x}, {{true, false}, {false, false}}), NumericalError); // even if unsearched
+    EXPECT_THROW(search.mortonOrder(x), NumericalError);
+  }
+}
+
+/// Cell of p in a grid of cell size h anchored at lo (independent of the search's internals).
+std::array<long long, 3> cellOf(const Vec3& p, const Vec3& lo, double h) {
+  return {static_cast<long long>(std::floor((p.x() - lo.x()) / h)), static_cast<long long>(std::floor((p.y() - lo.y()) / h)),
+          static_cast<long long>(std::floor((p.z() - lo.z()) / h))};
+}
+
+TEST(NeighbourSearch, MortonOrderIsAPermutationGroupingCells) {
+  const double h = 0.04;
+  // Coordinates at cell centres + jitter well away from cell faces, so the test's own cell assignment cannot
+  // disagree with the search's by round-off.
+  std::mt19937_64 rng(6);
+  std::uniform_int_distribution<int> cell(0, 9);
+  std::uniform_real_distribution<double> jitter(0.1 * h, 0.9 * h);
+  Positions x(4000);
+  for (auto& p : x) p = Vec3(cell(rng) * h + jitter(rng), cell(rng) * h + jitter(rng), cell(rng) * h + jitter(rng));
+  x[0] = Vec3::Zero(); // fixes the grid origin
+  const NeighbourSearch search(h);
+  const std::vector<Index> order = search.mortonOrder(x);
+  ASSERT_EQ(order.size(), x.size());
+  std::vector<Index> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<Index> identity(x.size());
+  std::iota(identity.begin(), identity.end(), Index{0});
+  ASSERT_EQ(sorted, identity);
+  // Particles of one cell are consecutive, and keep their original order (stable).
+  std::map<std::array<long long, 3>, std::pair<std::size_t, Index>> last; // cell -> (position in order, index)
+  for (std::size_t n = 0; n < order.size(); ++n) {
+    const auto c = cellOf(x[static_cast<std::size_t>(order[n])], Vec3::Zero(), h);
+    const auto it = last.find(c);
+    if (it != last.end()) {
+      EXPECT_EQ(it->second.first, n - 1) << "cell split in the Morton order";
+      EXPECT_LT(it->second.second, order[n]) << "not stable";
+    }
+    last[c] = {n, order[n]};
+  }
+  // Morton order of the 2 x 2 x 2 block of cells at the origin: x fastest, then y, then z.
+  const std::array<long long, 3> zOrder[8] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0},
+                                              {0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}};
+  std::vector<std::array<long long, 3>> seen;
+  for (Index i : order) {
+    const auto c = cellOf(x[static_cast<std::size_t>(i)], Vec3::Zero(), h);
+    if (c[0] < 2 && c[1] < 2 && c[2] < 2 && (seen.empty() || seen.back() != c)) seen.push_back(c);
+  }
+  ASSERT_EQ(seen.size(), 8u);
+  for (int n = 0; n < 8; ++n) EXPECT_EQ(seen[static_cast<std::size_t>(n)], zOrder[n]) << n;
+}
+
+TEST(NeighbourSearch, PermuteMovesEveryFieldTogether) {
+  const double h = 0.04;
+  const std::size_t n = 1500;
+  ParticleSet set("porous", SetKind::Porous);
+  set.particleVolume = 8e-6;
+  set.mass = 0.016;
+  set.restDensity = 2000.0;
+  auto& p = set.addReal("p", Output);
+  auto& F = set.addMat3("F", Restart);
+  auto& state = set.addInt("state", Restart);
+  auto& scratch = set.addVec3("scratch");
+  set.resize(n);
+  const Positions x0 = randomPoints(n, Vec3(-0.2, 0.0, 0.1), Vec3(0.2, 0.3, 0.3), 8);
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    set.integer(field::id)[i] = static_cast<std::int64_t>(1000 + 3 * i); // unique ids, not equal to the slot
+    set.integer(field::objectId)[i] = static_cast<std::int64_t>(i % 3);
+    set.x()[i] = x0[i];
+    set.v()[i] = Vec3(u(rng), u(rng), u(rng));
+    p[i] = u(rng);
+    F[i] = Mat3::Random();
+    state[i] = static_cast<std::int64_t>(i % 2);
+    scratch[i] = Vec3(u(rng), u(rng), u(rng));
+  }
+  // Snapshot keyed by id: every field of every particle.
+  using Row = std::tuple<std::int64_t, Vec3, Vec3, double, Mat3, std::int64_t, Vec3>;
+  auto snapshot = [&]() {
+    std::map<std::int64_t, Row> rows;
+    for (std::size_t i = 0; i < set.size(); ++i)
+      rows[set.integer(field::id)[i]] = {set.integer(field::objectId)[i], set.x()[i], set.v()[i], set.real("p")[i],
+                                         set.mat3("F")[i], set.integer("state")[i], set.vec3("scratch")[i]};
+    return rows;
+  };
+  const auto before = snapshot();
+  ASSERT_EQ(before.size(), n);
+  const auto fieldsBefore = set.fields();
+  const std::vector<std::int64_t> idsBefore = set.integer(field::id);
+  const auto* pAddress = &p;
+
+  const std::vector<Index> order = NeighbourSearch(h).mortonOrder(set.x());
+  set.permute(order);
+
+  // New slot i holds old slot order[i], for every field.
+  for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(set.integer(field::id)[i], idsBefore[static_cast<std::size_t>(order[i])]);
+  EXPECT_NE(set.integer(field::id), idsBefore) << "the Morton order of random points is not the identity";
+  // Same multiset of (id, all values): nothing changed but the slots.
+  const auto after = snapshot();
+  ASSERT_EQ(after.size(), n);
+  for (const auto& [id, row] : before) {
+    const auto it = after.find(id);
+    ASSERT_TRUE(it != after.end()) << "id " << id << " lost";
+    EXPECT_TRUE(it->second == row) << "id " << id << " changed its values";
+  }
+  // Registry, set constants and field references are unchanged.
+  EXPECT_EQ(set.size(), n);
+  const auto fieldsAfter = set.fields();
+  ASSERT_EQ(fieldsAfter.size(), fieldsBefore.size());
+  for (std::size_t f = 0; f < fieldsAfter.size(); ++f) {
+    EXPECT_EQ(fieldsAfter[f].name, fieldsBefore[f].name);
+    EXPECT_EQ(fieldsAfter[f].type, fieldsBefore[f].type);
+    EXPECT_EQ(fieldsAfter[f].role, fieldsBefore[f].role);
+  }
+  EXPECT_EQ(set.particleVolume, 8e-6);
+  EXPECT_EQ(set.mass, 0.016);
+  EXPECT_EQ(set.restDensity, 2000.0);
+  EXPECT_EQ(&set.real("p"), pAddress);
+  // Sorting twice is idempotent: the sorted set is already in Morton order.
+  const std::vector<Index> again = NeighbourSearch(h).mortonOrder(set.x());
+  std::vector<Index> identity(n);
+  std::iota(identity.begin(), identity.end(), Index{0});
+  EXPECT_EQ(again, identity);
+  // A wrong-length order is a logic error and leaves the set alone.
+  EXPECT_THROW(set.permute(std::vector<Index>(n - 1, 0)), std::logic_error);
+  EXPECT_EQ(set.size(), n);
+}
+
+TEST(NeighbourSearch, ListsFollowAPermutation) {
+  // Searching after sorting gives the same neighbour pairs, renamed by the permutation.
+  const double h = 0.04;
+  const Positions x = randomPoints(2500, Vec3::Zero(), Vec3(0.3, 0.2, 0.3), 10);
+  NeighbourSearch search(h);
+  const std::vector<Index> order = search.mortonOrder(x);
+  Positions sorted(x.size());
+  std::vector<Index> newSlot(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    sorted[i] = x[static_cast<std::size_t>(order[i])];
+    newSlot[static_cast<std::size_t>(order[i])] = static_cast<Index>(i);
+  }
+  search.update({&x}, {{true}});
+  Lists original = toLists(search.list(0, 0));
+  search.update({&sorted}, {{true}});
+  const Lists renamed = toLists(search.list(0, 0));
+  Lists expected(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i)
+    for (Index j : original[static_cast<std::size_t>(order[i])]) expected[i].push_back(newSlot[static_cast<std::size_t>(j)]);
+  expectSameSets(renamed, expected, "sorted");
+}
+
+} // namespace
+} // namespace poro
