@@ -17,6 +17,11 @@ namespace {
 constexpr std::int64_t kMaxCells = std::int64_t(1) << 27;
 /// Particles per task of the list build: large enough to amortise, small enough to balance.
 constexpr std::size_t kChunk = 512;
+/// Cells are a hair wider than H. With cells of exactly H, round-off in (x - origin) * (1/H) can put two
+/// particles whose distance is within an ulp of H into cells two apart (e.g. x = 0.7999999999999999 and
+/// 0.8999999999999999 at H = 0.1 land in cells 7 and 9), and the 27-cell stencil misses the pair. The
+/// margin exceeds the relative round-off (a few 1e-16) times the largest cell index (kMaxCells).
+constexpr double kCellWidening = 1.0 + 1e-6;
 
 struct CellIndex {
   std::int64_t ix, iy, iz;
@@ -43,9 +48,10 @@ NeighbourSearch::CellGrid NeighbourSearch::makeGrid(const std::vector<const std:
   CellGrid grid;
   if (lo.x() > hi.x()) return grid; // no particles
   grid.origin = lo;
+  const double cellSize = h_ * kCellWidening;
   double cells = 1.0;
   for (int d = 0; d < 3; ++d) {
-    grid.dims[d] = static_cast<std::int64_t>(std::floor((hi[d] - lo[d]) / h_)) + 1;
+    grid.dims[d] = static_cast<std::int64_t>(std::floor((hi[d] - lo[d]) / cellSize)) + 1;
     cells *= static_cast<double>(grid.dims[d]);
   }
   if (cells > static_cast<double>(kMaxCells)) {
@@ -65,7 +71,7 @@ void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positi
   const CellGrid grid = makeGrid(positions);
   const std::int64_t nx = grid.dims[0], ny = grid.dims[1], nz = grid.dims[2];
   const std::int64_t nCells = nx * ny * nz;
-  const double invH = 1.0 / h_;
+  const double invH = 1.0 / (h_ * kCellWidening);
   const double h2 = h_ * h_;
 
   auto cellOf = [&](const Vec3& p) {

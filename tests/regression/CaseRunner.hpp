@@ -21,18 +21,21 @@ namespace poro::test {
 
 class CaseRunner {
 public:
-  /// Copies tutorials/<tutorial> to a fresh scratch directory named after the running test.
-  explicit CaseRunner(const std::string& tutorial) {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = std::filesystem::temp_directory_path() /
-           ("porosph_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" + std::to_string(::getpid()));
+  /// Copies tutorials/<tutorial> to a fresh scratch directory named after the running test (or `name`
+  /// outside a test, e.g. in SetUpTestSuite).
+  explicit CaseRunner(const std::string& tutorial, std::string name = "") {
+    if (const auto* info = ::testing::UnitTest::GetInstance()->current_test_info())
+      name = std::string(info->test_suite_name()) + "_" + info->name();
+    for (char& c : name)
+      if (c == '/') c = '_';
+    dir_ = std::filesystem::temp_directory_path() / ("porosph_" + name + "_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
     std::filesystem::copy(std::filesystem::path(POROSPH_TUTORIALS) / tutorial, dir_,
                           std::filesystem::copy_options::recursive);
   }
   ~CaseRunner() {
-    if (!::testing::Test::HasFailure()) std::filesystem::remove_all(dir_);
+    if (!::testing::Test::HasFailure()) std::filesystem::remove_all(dir_); // keep a failed case to look at
   }
 
   const std::filesystem::path& dir() const { return dir_; }

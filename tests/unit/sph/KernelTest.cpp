@@ -106,8 +106,10 @@ TEST(CubicKernel, GradientEqualsCentralDifferencesOfW) {
   for (int n = 0; n < 2000; ++n) {
     // Half the samples in each branch; a few right next to q = 1/2 and q = 1 where the stencil straddles them.
     double q;
-    if (n % 10 == 0) q = (n % 20 == 0 ? 0.5 : 1.0) + (uq(rng) - 0.5) * 1e-5;
-    else q = n % 2 ? 0.02 + 0.48 * uq(rng) : 0.5 + 0.5 * uq(rng);
+    if (n % 10 == 0)
+      q = (n % 20 == 0 ? 0.5 : 1.0) + (uq(rng) - 0.5) * 1e-5;
+    else
+      q = n % 2 ? 0.02 + 0.48 * uq(rng) : 0.5 + 0.5 * uq(rng);
     (q <= 0.5 ? inner : outer)++;
     const Vec3 x = q * kH * randomUnit(rng);
     Vec3 fd;

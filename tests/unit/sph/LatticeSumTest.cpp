@@ -16,7 +16,7 @@ namespace {
 /// Lattice sums seen by particle a at `centre`, over the lattice points centre + 2r (i, j, l) with
 /// |i|, |j|, |l| <= 3 that `keep` accepts (3 spacings = 6r > H, so the neighbourhood is complete).
 struct LatticeSums {
-  double shepard = 0.0; ///< sum_b V W_ab including b = a
+  double shepard = 0.0;        ///< sum_b V W_ab including b = a
   Vec3 gradSum = Vec3::Zero(); ///< G = sum_b V grad W_ab
   double gradSumScale = 0.0;   ///< sum_b |V grad W_ab|, the size of the round-off of gradSum
   double q = 0.0;              ///< Q = sum_b V^2 |grad W_ab|^2
@@ -44,8 +44,8 @@ LatticeSums latticeSums(double r, const Vec3& centre, const std::function<bool(i
 }
 
 bool interior(int, int, int) { return true; }
-bool face(int, int, int l) { return l >= 0; }               // half-space below z_a is empty
-bool edge(int, int j, int l) { return j >= 0 && l >= 0; }   // quarter-space
+bool face(int, int, int l) { return l >= 0; }             // half-space below z_a is empty
+bool edge(int, int j, int l) { return j >= 0 && l >= 0; } // quarter-space
 bool corner(int i, int j, int l) { return i >= 0 && j >= 0 && l >= 0; }
 
 constexpr double kR = 0.01; // r = 1 cm

@@ -49,7 +49,8 @@ void expectSameSets(Lists found, Lists expected, const char* what) {
   std::size_t mismatches = 0;
   for (std::size_t i = 0; i < found.size(); ++i) {
     std::sort(found[i].begin(), found[i].end());
-    ASSERT_TRUE(std::adjacent_find(found[i].begin(), found[i].end()) == found[i].end()) << what << ": duplicate in " << i;
+    ASSERT_TRUE(std::adjacent_find(found[i].begin(), found[i].end()) == found[i].end())
+        << what << ": duplicate in " << i;
     std::sort(expected[i].begin(), expected[i].end());
     if (found[i] != expected[i] && ++mismatches <= 5)
       ADD_FAILURE() << what << ": particle " << i << " has " << found[i].size() << " neighbours, brute force "
@@ -130,7 +131,7 @@ TEST(NeighbourSearch, PairsAtExactlyHAreExcluded) {
   for (int k = 0; k < 6; ++k)
     for (int j = 0; j < 6; ++j)
       for (int i = 0; i < 6; ++i) x.emplace_back(0.125 * i, 0.125 * j, 0.25 * k); // H/2 and H spacings
-  x.emplace_back(0.25 - 1.0 / 1024, 0.0, 0.5); // just inside H of (0, 0, 0.5)
+  x.emplace_back(0.25 - 1.0 / 1024, 0.0, 0.5);                                    // just inside H of (0, 0, 0.5)
   checkAgainstBruteForce({&x}, {{true}}, h);
   NeighbourSearch search(h);
   search.update({&x}, {{true}});
@@ -225,7 +226,8 @@ TEST(NeighbourSearch, NonFinitePositionThrows) {
 
 /// Cell of p in a grid of cell size h anchored at lo (independent of the search's internals).
 std::array<long long, 3> cellOf(const Vec3& p, const Vec3& lo, double h) {
-  return {static_cast<long long>(std::floor((p.x() - lo.x()) / h)), static_cast<long long>(std::floor((p.y() - lo.y()) / h)),
+  return {static_cast<long long>(std::floor((p.x() - lo.x()) / h)),
+          static_cast<long long>(std::floor((p.y() - lo.y()) / h)),
           static_cast<long long>(std::floor((p.z() - lo.z()) / h))};
 }
 
@@ -300,8 +302,13 @@ TEST(NeighbourSearch, PermuteMovesEveryFieldTogether) {
   auto snapshot = [&]() {
     std::map<std::int64_t, Row> rows;
     for (std::size_t i = 0; i < set.size(); ++i)
-      rows[set.integer(field::id)[i]] = {set.integer(field::objectId)[i], set.x()[i], set.v()[i], set.real("p")[i],
-                                         set.mat3("F")[i], set.integer("state")[i], set.vec3("scratch")[i]};
+      rows[set.integer(field::id)[i]] = {set.integer(field::objectId)[i],
+                                         set.x()[i],
+                                         set.v()[i],
+                                         set.real("p")[i],
+                                         set.mat3("F")[i],
+                                         set.integer("state")[i],
+                                         set.vec3("scratch")[i]};
     return rows;
   };
   const auto before = snapshot();
@@ -314,7 +321,8 @@ TEST(NeighbourSearch, PermuteMovesEveryFieldTogether) {
   set.permute(order);
 
   // New slot i holds old slot order[i], for every field.
-  for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(set.integer(field::id)[i], idsBefore[static_cast<std::size_t>(order[i])]);
+  for (std::size_t i = 0; i < n; ++i)
+    ASSERT_EQ(set.integer(field::id)[i], idsBefore[static_cast<std::size_t>(order[i])]);
   EXPECT_NE(set.integer(field::id), idsBefore) << "the Morton order of random points is not the identity";
   // Same multiset of (id, all values): nothing changed but the slots.
   const auto after = snapshot();
@@ -365,7 +373,8 @@ TEST(NeighbourSearch, ListsFollowAPermutation) {
   const Lists renamed = toLists(search.list(0, 0));
   Lists expected(x.size());
   for (std::size_t i = 0; i < x.size(); ++i)
-    for (Index j : original[static_cast<std::size_t>(order[i])]) expected[i].push_back(newSlot[static_cast<std::size_t>(j)]);
+    for (Index j : original[static_cast<std::size_t>(order[i])])
+      expected[i].push_back(newSlot[static_cast<std::size_t>(j)]);
   expectSameSets(renamed, expected, "sorted");
 }
 
