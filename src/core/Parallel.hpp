@@ -21,12 +21,13 @@ void forEach(std::size_t n, const Body& body) {
   for (long long i = 0; i < count; ++i) body(static_cast<std::size_t>(i));
 }
 
-/// Like forEach but with dynamic scheduling in chunks, for loops with uneven work per item.
+/// Calls body(t) for t in [0, n) handing out one task at a time: for a few large tasks (chunks of
+/// particles) that must spread over all threads.
 template <class Body>
-void forEachDynamic(std::size_t n, const Body& body) {
+void forEachTask(std::size_t n, const Body& body) {
   const long long count = static_cast<long long>(n);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (long long i = 0; i < count; ++i) body(static_cast<std::size_t>(i));
+#pragma omp parallel for schedule(dynamic, 1)
+  for (long long t = 0; t < count; ++t) body(static_cast<std::size_t>(t));
 }
 
 /// Block size of deterministic reductions.

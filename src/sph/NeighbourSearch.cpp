@@ -121,7 +121,7 @@ void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positi
       const std::size_t chunks = (n + kChunk - 1) / kChunk;
       std::vector<std::vector<Index>> chunkIndices(chunks);
       std::vector<std::int64_t> counts(n, 0);
-      parallel::forEachDynamic(chunks, [&](std::size_t chunk) {
+      parallel::forEachTask(chunks, [&](std::size_t chunk) {
         std::vector<Index>& out = chunkIndices[chunk];
         out.reserve(kChunk * 40);
         const std::size_t end = std::min(n, (chunk + 1) * kChunk);

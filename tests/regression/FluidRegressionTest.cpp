@@ -170,8 +170,8 @@ TEST_F(HydrostaticTank, BottomForceEqualsWeight) {
 /// 4 particles thick.
 TEST(DamBreak, SurgeSpeedFollowsMartinMoyce) {
   CaseRunner runner("fluid/damBreak");
-  runner.replace("system/particleDict", "max: [0.2, 0.4, 0.16]", "max: [0.2, 0.4, 0.04]");
-  runner.replace("system/particleDict", "max: [1.2005, 0.6005, 0.1605]", "max: [1.2005, 0.6005, 0.0405]");
+  runner.replace("system/particleDict", "max: [0.2, 0.4, 0.64]", "max: [0.2, 0.4, 0.04]");
+  runner.replace("system/particleDict", "max: [1.2005, 0.6005, 0.6405]", "max: [1.2005, 0.6005, 0.0405]");
   runner.setKey("system/controlDict", "endTime", "0.32");
   runner.setKey("system/controlDict", "writeInterval", "0.01");
   ASSERT_EQ(runner.sample(), 0) << runner.read("log.sampleParticles");

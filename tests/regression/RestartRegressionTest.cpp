@@ -7,8 +7,8 @@ namespace poro::test {
 namespace {
 
 void makeSmallDamBreak(CaseRunner& runner, const std::string& endTime) {
-  runner.replace("system/particleDict", "max: [0.2, 0.4, 0.16]", "max: [0.1, 0.2, 0.04]");
-  runner.replace("system/particleDict", "max: [1.2005, 0.6005, 0.1605]", "max: [0.4005, 0.3005, 0.0405]");
+  runner.replace("system/particleDict", "max: [0.2, 0.4, 0.64]", "max: [0.1, 0.2, 0.04]");
+  runner.replace("system/particleDict", "max: [1.2005, 0.6005, 0.6405]", "max: [0.4005, 0.3005, 0.0405]");
   runner.setKey("system/controlDict", "endTime", endTime);
   runner.setKey("system/controlDict", "writeInterval", "0.05");
   // Sort often, so the restart crosses Morton reorderings.
