@@ -15,6 +15,5 @@ inline constexpr const char* rhoStar = "rhoStar";   ///< predicted normalised de
 inline constexpr const char* alpha = "alpha";       ///< 1/(|G|^2 + Q), the pressure diagonal factor [m^2]
 inline constexpr const char* gradSum = "gradSum";   ///< G = sum f V gradW [1/m]
 inline constexpr const char* accelP = "accelP";     ///< pressure acceleration a^p [m/s^2]
-inline constexpr const char* vOld = "vOld";         ///< v^n during the implicit solve [m/s]
 
 } // namespace poro::field

@@ -31,7 +31,6 @@ ImplicitSolver::ImplicitSolver(const ImplicitSettings& settings, std::vector<std
 
 void ImplicitSolver::registerFields(ParticleSet& set) {
   set.addVec3(field::deltaV, Restart);
-  set.addVec3(field::vOld);
   for (const char* name : {kRhs, kUnknown, kR, kZ, kP, kQ}) set.addVec3(name);
   set.addMat3(kInverseDiagonal);
 }
