@@ -169,7 +169,8 @@ struct PressureScene {
     control.endTime = 1.0;
     control.deltaT = kDeltaT;
     control.writeInterval = 1.0;
-    solver = std::make_unique<Solver>(makeScene(), fluid, SolverSettings{}, control, RunState{});
+    solver = std::make_unique<Solver>(makeScene(), fluid, std::vector<PorousMaterial>{}, SolverSettings{}, control,
+                                      RunState{});
     solver->step(kDeltaT);
 
     ParticleSystem& ps = solver->particles();

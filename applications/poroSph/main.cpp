@@ -25,8 +25,8 @@ int main(int argc, char* argv[]) try {
   banner << "Case: " << args.caseDir() << "\nStarting from time " << simulation.startName << " with "
          << simulation.particles.particleCount() << " particles";
   log::info(banner.str());
-  Solver solver(std::move(simulation.particles), simulation.fluid, simulation.solver, simulation.control,
-                simulation.start);
+  Solver solver(std::move(simulation.particles), simulation.fluid, std::move(simulation.materials), simulation.solver,
+                simulation.control, simulation.start);
   log::info("Threads: " + std::to_string(parallel::threads()));
   TimeWriter writer(args.caseDir(), simulation.output, simulation.startName);
   solver.run([&](const Solver& s) { writer.write(s.particles(), s.state()); });

@@ -15,6 +15,12 @@ double readParticleRadius(const fs::path& caseDir) {
   return dict.getReal("particleRadius", Range::positive());
 }
 
+std::vector<PorousMaterial> readPorousMaterials(const fs::path& caseDir) {
+  const fs::path path = caseDir / "constant" / "porosityProperties";
+  if (!fs::exists(path)) return {};
+  return PorousMaterial::readAll(Dictionary::read(path.string()));
+}
+
 SimulationCase readCase(const fs::path& caseDir, int threads) {
   if (!fs::is_directory(caseDir)) throw InputError(caseDir.string() + ": case directory not found");
   const Dictionary controlDict = Dictionary::read((caseDir / "system" / "controlDict").string());
@@ -24,11 +30,12 @@ SimulationCase readCase(const fs::path& caseDir, int threads) {
   controlDict.checkUnknownKeys();
 
   const fs::path solverDictPath = caseDir / "system" / "solverDict";
-  SolverSettings solver = fs::exists(solverDictPath) ? SolverSettings::read(Dictionary::read(solverDictPath.string()))
-                                                     : SolverSettings{};
+  SolverSettings solver =
+      fs::exists(solverDictPath) ? SolverSettings::read(Dictionary::read(solverDictPath.string())) : SolverSettings{};
   if (threads > 0) solver.threads = threads;
   const FluidProperties fluid =
       FluidProperties::read(Dictionary::read((caseDir / "constant" / "fluidProperties").string()));
+  std::vector<PorousMaterial> materials = readPorousMaterials(caseDir);
   const double radius = readParticleRadius(caseDir);
 
   std::string startName;
@@ -44,11 +51,11 @@ SimulationCase readCase(const fs::path& caseDir, int threads) {
                        timeName(control.startTime) + (times.empty() ? "; run sampleParticles first" : ""));
   }
   RunState start = readRunState(caseDir / startName);
-  ParticleSystem particles = readParticles(caseDir, startName, radius);
+  ParticleSystem particles = readParticles(caseDir, startName, radius, materials);
   if (start.time >= control.endTime)
     throw InputError((caseDir / "system" / "controlDict").string() + ": endTime " + timeName(control.endTime) +
                      " is not after the start time " + startName);
-  return SimulationCase{control, output, solver, fluid, startName, start, std::move(particles)};
+  return SimulationCase{control, output, solver, fluid, std::move(materials), startName, start, std::move(particles)};
 }
 
 } // namespace poro

@@ -1,16 +1,18 @@
 #pragma once
 /// Reads and validates a whole case before anything runs (ARCHITECTURE.md "Input is checked at the
-/// door"): system/controlDict, system/solverDict, constant/fluidProperties, the particle radius of
-/// system/particleDict, and the particles of the start time directory.
+/// door"): system/controlDict, system/solverDict, constant/fluidProperties, constant/porosityProperties, the
+/// particle radius of system/particleDict, and the particles of the start time directory.
 
 #include "io/OutputSettings.hpp"
 #include "physics/FluidProperties.hpp"
+#include "physics/PorousMaterial.hpp"
 #include "physics/Solver.hpp"
 #include "physics/SolverSettings.hpp"
 #include "physics/TimeControl.hpp"
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace poro {
 
@@ -19,7 +21,8 @@ struct SimulationCase {
   OutputSettings output;
   SolverSettings solver;
   FluidProperties fluid;
-  std::string startName; ///< the time directory the run starts from
+  std::vector<PorousMaterial> materials; ///< constant/porosityProperties in file order; empty without that file
+  std::string startName;                 ///< the time directory the run starts from
   RunState start;
   ParticleSystem particles;
 };
@@ -29,5 +32,9 @@ SimulationCase readCase(const std::filesystem::path& caseDir, int threads = 0);
 
 /// particleRadius of system/particleDict (the one key the solver needs from it).
 double readParticleRadius(const std::filesystem::path& caseDir);
+
+/// The porous materials of constant/porosityProperties, validated (PorousMaterial::readAll), in file order;
+/// empty when the case has no such file (a fluid-only case).
+std::vector<PorousMaterial> readPorousMaterials(const std::filesystem::path& caseDir);
 
 } // namespace poro

@@ -5,10 +5,12 @@
 #include "core/Log.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/ParticleVtk.hpp"
+#include "io/PorousSets.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <sstream>
 
 namespace poro {
@@ -26,7 +28,14 @@ bool isTimeName(const std::string& name, double& value) {
   return end && *end == '\0' && std::isfinite(value);
 }
 
-SetKind kindOfFile(const std::string& stem) {
+/// The particle files of a time directory: fluid.vtp, porous.vtp (every porous material) and boundary.vtp.
+bool isParticleFile(const fs::path& file) {
+  const std::string stem = file.stem().string();
+  return file.extension() == ".vtp" && (stem == "fluid" || stem == kPorousSetName || stem == "boundary");
+}
+
+SetKind kindOfFile(const fs::path& file) {
+  const std::string stem = file.stem().string();
   if (stem == "fluid") return SetKind::Fluid;
   if (stem == "boundary") return SetKind::Boundary;
   return SetKind::Porous;
@@ -38,13 +47,35 @@ std::string formatExact(double value) {
   return buffer;
 }
 
-void writeSets(const fs::path& dir, const ParticleSystem& particles, bool withBoundaries, bool binary) {
+/// The files a time directory gets, in ParticleSystem order: (part name = file stem, set). Porous sets
+/// share one file, so their entry is the merged set, owned by `merged`.
+std::vector<std::pair<std::string, const ParticleSet*>> filesOf(const ParticleSystem& particles, bool withBoundaries,
+                                                                std::unique_ptr<ParticleSet>& merged) {
+  std::vector<std::pair<std::string, const ParticleSet*>> files;
   for (std::size_t s = 0; s < particles.size(); ++s) {
     const ParticleSet& set = particles[s];
     if (set.kind() == SetKind::Boundary && !withBoundaries) continue;
-    writeParticleSet(set, dir / (set.name() + ".vtp"), binary);
+    if (set.kind() != SetKind::Porous) {
+      files.emplace_back(set.name(), &set);
+    } else if (!merged) {
+      merged = std::make_unique<ParticleSet>(mergePorousSets(particles));
+      files.emplace_back(kPorousSetName, merged.get());
+    }
+  }
+  return files;
+}
+
+/// Writes the particle files into `dir` and returns their part names (case.pvd), in ParticleSystem order.
+std::vector<std::string> writeSets(const fs::path& dir, const ParticleSystem& particles, bool withBoundaries,
+                                   bool binary) {
+  std::unique_ptr<ParticleSet> merged;
+  std::vector<std::string> parts;
+  for (const auto& [part, set] : filesOf(particles, withBoundaries, merged)) {
+    writeParticleSet(*set, dir / (part + ".vtp"), binary);
+    parts.push_back(part);
   }
   fs::create_directories(dir / "uniform");
+  return parts;
 }
 
 void writeRunState(const fs::path& dir, const RunState& state) {
@@ -103,23 +134,34 @@ RunState readRunState(const fs::path& timeDir) {
   return state;
 }
 
-ParticleSystem readParticles(const fs::path& caseDir, const std::string& name, double particleRadius) {
+ParticleSystem readParticles(const fs::path& caseDir, const std::string& name, double particleRadius,
+                             const std::vector<PorousMaterial>& materials) {
   const fs::path dir = caseDir / name;
   if (!fs::is_directory(dir)) throw InputError(dir.string() + ": time directory not found");
   std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(dir))
-    if (entry.path().extension() == ".vtp") files.push_back(entry.path());
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (entry.path().extension() != ".vtp") continue;
+    // Anything else would be silently left out of the run (e.g. a porous set of an older layout, sand.vtp).
+    if (!isParticleFile(entry.path()))
+      throw InputError(entry.path().string() +
+                       ": not a particle file of a time directory; expected fluid.vtp, porous.vtp (all porous "
+                       "materials) and boundary.vtp only; move the file elsewhere");
+    files.push_back(entry.path());
+  }
   if (!fs::exists(dir / "boundary.vtp") && fs::exists(caseDir / "0" / "boundary.vtp"))
     files.push_back(caseDir / "0" / "boundary.vtp");
-  // Fluid first, then porous sets by name, boundaries last (ParticleSystem order, METHOD.md §1).
-  auto rank = [](const fs::path& p) { return static_cast<int>(kindOfFile(p.stem().string())); };
-  std::sort(files.begin(), files.end(), [&](const fs::path& a, const fs::path& b) {
-    return rank(a) != rank(b) ? rank(a) < rank(b) : a.stem() < b.stem();
-  });
+  // Fluid first, then porous sets in material order, boundaries last (ParticleSystem order, METHOD.md §1).
+  auto rank = [](const fs::path& p) { return static_cast<int>(kindOfFile(p)); };
+  std::sort(files.begin(), files.end(), [&](const fs::path& a, const fs::path& b) { return rank(a) < rank(b); });
   ParticleSystem particles(particleRadius);
   for (const fs::path& file : files) {
-    ParticleSet& set = particles.add(file.stem().string(), kindOfFile(file.stem().string()));
-    readParticleSet(set, file);
+    if (kindOfFile(file) == SetKind::Porous) {
+      ParticleSet merged(kPorousSetName, SetKind::Porous);
+      readParticleSet(merged, file);
+      splitPorousSet(std::move(merged), materials, particles, file);
+    } else {
+      readParticleSet(particles.add(file.stem().string(), kindOfFile(file)), file);
+    }
   }
   if (!particles.find("fluid"))
     throw InputError(dir.string() + ": no fluid.vtp; run sampleParticles first (it writes 0/)");
@@ -140,20 +182,20 @@ TimeWriter::TimeWriter(fs::path caseDir, const OutputSettings& settings, const s
   }
   series_.removeTimesAfter(start);
   for (const auto& entry : fs::directory_iterator(caseDir_ / startName))
-    if (entry.path().extension() == ".vtp") series_.add(start, entry.path().stem().string(), startName + "/" + entry.path().filename().string());
+    if (isParticleFile(entry.path()))
+      series_.add(start, entry.path().stem().string(), startName + "/" + entry.path().filename().string());
   if (startName != "0" && fs::exists(caseDir_ / "0" / "boundary.vtp")) series_.add(0.0, "boundary", "0/boundary.vtp");
   series_.write(pvd);
 }
 
 void TimeWriter::write(const ParticleSystem& particles, const RunState& state) {
   const std::string name = timeName(state.time);
+  std::vector<std::string> parts;
   writeDirectoryAtomically(caseDir_, name, [&](const fs::path& dir) {
-    writeSets(dir, particles, false, settings_.binary);
+    parts = writeSets(dir, particles, false, settings_.binary);
     writeRunState(dir, state);
   });
-  for (std::size_t s = 0; s < particles.size(); ++s)
-    if (particles[s].kind() != SetKind::Boundary)
-      series_.add(state.time, particles[s].name(), name + "/" + particles[s].name() + ".vtp");
+  for (const std::string& part : parts) series_.add(state.time, part, name + "/" + part + ".vtp");
   if (settings_.purgeWrite > 0) purge();
   series_.write(caseDir_ / kPvdName);
 }
@@ -169,15 +211,16 @@ void TimeWriter::purge() {
   }
 }
 
-void TimeWriter::writeAll(const fs::path& caseDir, const ParticleSystem& particles, const RunState& state, bool binary) {
+void TimeWriter::writeAll(const fs::path& caseDir, const ParticleSystem& particles, const RunState& state,
+                          bool binary) {
   const std::string name = timeName(state.time);
+  std::vector<std::string> parts;
   writeDirectoryAtomically(caseDir, name, [&](const fs::path& dir) {
-    writeSets(dir, particles, true, binary);
+    parts = writeSets(dir, particles, true, binary);
     writeRunState(dir, state);
   });
   PvdSeries series;
-  for (std::size_t s = 0; s < particles.size(); ++s)
-    series.add(state.time, particles[s].name(), name + "/" + particles[s].name() + ".vtp");
+  for (const std::string& part : parts) series.add(state.time, part, name + "/" + part + ".vtp");
   series.write(caseDir / kPvdName);
 }
 

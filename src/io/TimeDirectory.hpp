@@ -1,11 +1,12 @@
 #pragma once
-/// Time directories of a case (ARCHITECTURE.md "A case directory"): `<t>/<set>.vtp` per particle set and
-/// `<t>/uniform/time` (time, step index, the coming step's deltaT), written under a temporary name and
-/// renamed when complete; `case.pvd` rewritten atomically after each write; boundary sets are static and
-/// live in `0/` only.
+/// Time directories of a case (ARCHITECTURE.md "A case directory"): `<t>/fluid.vtp`, `<t>/porous.vtp` (all
+/// porous sets in one file, io/PorousSets.hpp), `<t>/boundary.vtp` and `<t>/uniform/time` (time, step index,
+/// the coming step's deltaT), written under a temporary name and renamed when complete; `case.pvd` rewritten atomically
+/// after each write; boundary sets are static and live in `0/` only.
 
 #include "io/OutputSettings.hpp"
 #include "io/PvdSeries.hpp"
+#include "physics/PorousMaterial.hpp"
 #include "physics/Solver.hpp"
 
 #include <filesystem>
@@ -28,9 +29,13 @@ std::vector<TimeDirectoryEntry> listTimeDirectories(const std::filesystem::path&
 /// Reads `<dir>/uniform/time`.
 RunState readRunState(const std::filesystem::path& timeDir);
 
-/// Loads every particle set of a time directory: each `<set>.vtp` in it, plus `0/boundary.vtp` when the
-/// directory has no boundary of its own. `fluid` and `boundary` name the fluid and wall sets.
-ParticleSystem readParticles(const std::filesystem::path& caseDir, const std::string& timeName, double particleRadius);
+/// Loads every particle set of a time directory: `fluid.vtp`, `porous.vtp` and `boundary.vtp` (or
+/// `0/boundary.vtp` when the directory has no boundary of its own), in ParticleSystem order. `fluid` and
+/// `boundary` name the fluid and wall sets; porous.vtp is split by its materialId into one set per material
+/// of `materials` (constant/porosityProperties order), named after the material (splitPorousSet). Any other
+/// .vtp file in the directory, a missing fluid.vtp and a porous.vtp the materials cannot split are InputErrors.
+ParticleSystem readParticles(const std::filesystem::path& caseDir, const std::string& timeName, double particleRadius,
+                             const std::vector<PorousMaterial>& materials);
 
 /// Writes the solver's state as a time directory and keeps case.pvd in step.
 class TimeWriter {
@@ -38,7 +43,8 @@ public:
   /// Starts the series at the time directory `startName` (entries after it are dropped from case.pvd).
   TimeWriter(std::filesystem::path caseDir, const OutputSettings& settings, const std::string& startName);
 
-  /// Writes `<t>/` for the dynamic sets and uniform/time, atomically, then case.pvd and purgeWrite.
+  /// Writes `<t>/` for the dynamic sets (fluid.vtp, porous.vtp) and uniform/time, atomically, then case.pvd
+  /// (one part per file: "fluid", "porous") and purgeWrite.
   void write(const ParticleSystem& particles, const RunState& state);
 
   /// Writes a complete time directory including boundary sets (sampleParticles writes 0/ with this).

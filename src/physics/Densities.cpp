@@ -2,13 +2,164 @@
 
 #include "core/Parallel.hpp"
 #include "physics/FieldNames.hpp"
+#include "physics/VolumeFactors.hpp"
 #include "sph/BoundaryVolume.hpp"
+
+#include <algorithm>
 
 namespace poro {
 
 namespace {
 /// alpha is 0 below this value of |G|^2 + Q [1/m^2]: only particles without neighbours (METHOD.md §6.3).
 constexpr double kAlphaThreshold = 1e-5;
+/// Porous: sum_j V W_sj over fluid neighbours, the numerator of the saturation (Eq. 12).
+const char* const kFluidVolume = "fluidVolume";
+
+/// One neighbour set of the particle loop with everything the sums need.
+struct Partner {
+  const NeighbourList* list;
+  const std::vector<Vec3>* x;
+  std::vector<double>* gradients;
+  SetCoupling coupling;
+  bool counts; ///< f(a<-b) != 0 for some pair
+  const std::int64_t* objectB;
+  const std::int64_t* fixedB; ///< null: all Active
+  double massRatio;           ///< m_a / m_b
+  bool fluidB;
+  double solidShare; ///< (1 - phi_b) for a fluid a and porous b: the local-porosity sum
+};
+
+struct Wall {
+  const NeighbourList* list;
+  const std::vector<Vec3>* x;
+  const std::vector<double>* volume;
+  std::vector<double>* gradients;
+};
+
+void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& gradients) {
+  const ParticleSystem& ps = ctx.particles;
+  const CubicKernel& kernel = ctx.kernel;
+  ParticleSet& set = ctx.particles[a];
+  const bool porous = set.kind() == SetKind::Porous;
+  const auto& x = set.x();
+  const double volume = set.particleVolume;
+  const double rhoMax = set.restDensity;
+  const double self = selfFactor(ctx, a);
+  auto& rhoTilde = set.real(field::rhoTilde);
+  auto& density = set.real(field::density);
+  auto& alpha = set.real(field::alpha);
+  auto& gradSum = set.vec3(field::gradSum);
+  double* fluidVolume = porous ? set.real(kFluidVolume).data() : nullptr;
+  double* localPorosity = porous ? nullptr : set.real(field::localPorosity).data();
+  const std::int64_t* objectA = set.integer(field::objectId).data();
+
+  std::vector<Partner> partners;
+  const auto couplings = couplingsOf(ctx, a);
+  for (std::size_t b : ctx.dynamicSets) {
+    const ParticleSet& other = ps[b];
+    Partner p{};
+    p.list = &ctx.search.list(a, b);
+    p.x = &other.x();
+    p.gradients = &gradients.of(a, b);
+    p.gradients->resize(p.list->totalPairs());
+    for (const SetCoupling& c : couplings)
+      if (c.other == b) {
+        p.coupling = c;
+        p.counts = true;
+      }
+    p.objectB = other.integer(field::objectId).data();
+    p.fixedB = fixedFlags(other);
+    p.massRatio = set.mass / other.mass;
+    p.fluidB = other.kind() == SetKind::Fluid;
+    p.solidShare = !porous && ctx.materials[b] ? 1.0 - ctx.materials[b]->porosity : 0.0;
+    partners.push_back(p);
+  }
+  std::vector<Wall> walls;
+  for (std::size_t k : ctx.boundarySets) {
+    auto& g = gradients.of(a, k);
+    g.resize(ctx.search.list(a, k).totalPairs());
+    walls.push_back({&ctx.search.list(a, k), &ps[k].x(), &ps[k].real(kBoundaryVolumeField), &g});
+  }
+
+  parallel::forEach(set.size(), [&](std::size_t i) {
+    const Vec3 xi = x[i];
+    double sumW = self * kernel.w0(); // volume factors times W, times V below
+    double solidW = 0.0;              // fluid: sum (1 - phi_t) W_it
+    double fluidW = 0.0;              // porous: sum W_sj over fluid
+    Vec3 g = Vec3::Zero();
+    double q = 0.0;
+    for (const Partner& p : partners) {
+      std::size_t pair = p.list->offset(i);
+      const std::vector<Vec3>& xb = *p.x;
+      for (Index jIndex : p.list->of(i)) {
+        const std::size_t j = static_cast<std::size_t>(jIndex);
+        const Vec3 xij = xi - xb[j];
+        const double dist = xij.norm();
+        const double s = kernel.gradFactor(dist);
+        (*p.gradients)[pair++] = s;
+        const double w = kernel.w(dist);
+        if (p.fluidB && porous) fluidW += w;
+        if (!p.counts) continue;
+        const double f = p.coupling.factorOf(objectA[i] == p.objectB[j]);
+        sumW += f * w;
+        solidW += p.solidShare * w;
+        g += (f * s) * xij;
+        if (p.coupling.samePhase && !(p.fixedB && p.fixedB[j])) q += f * f * p.massRatio * s * s * xij.squaredNorm();
+      }
+    }
+    double rt = volume * sumW;
+    double wallW = 0.0;
+    g *= volume;
+    q *= volume * volume;
+    for (const Wall& wall : walls) {
+      std::size_t wp = wall.list->offset(i);
+      for (Index k : wall.list->of(i)) {
+        const std::size_t kk = static_cast<std::size_t>(k);
+        const Vec3 xik = xi - (*wall.x)[kk];
+        const double dist = xik.norm();
+        const double s = kernel.gradFactor(dist);
+        (*wall.gradients)[wp++] = s;
+        const double vk = (*wall.volume)[kk];
+        wallW += vk * kernel.w(dist);
+        g += (vk * s) * xik;
+      }
+    }
+    rt += wallW;
+    rhoTilde[i] = rt;
+    density[i] = rhoMax * rt;
+    gradSum[i] = g;
+    const double denom = g.squaredNorm() + q;
+    alpha[i] = denom > kAlphaThreshold ? 1.0 / denom : 0.0;
+    if (fluidVolume) fluidVolume[i] = volume * fluidW;
+    if (localPorosity) localPorosity[i] = 1.0 - volume * solidW - wallW;
+  });
+}
+
+/// S_s of Eq. 12 with the current densities of the material's particles.
+void computeSaturation(const StepContext& ctx, std::size_t a) {
+  ParticleSet& set = ctx.particles[a];
+  const double phi = ctx.materials[a]->porosity;
+  const auto& x = set.x();
+  const auto& rho = set.real(field::density);
+  const auto& fluidVolume = set.real(kFluidVolume);
+  auto& saturation = set.real(field::saturation);
+  const NeighbourList& same = ctx.search.list(a, a);
+  const CubicKernel& kernel = ctx.kernel;
+  const double m = set.mass;
+  parallel::forEach(set.size(), [&](std::size_t i) {
+    if (phi == 0.0) {
+      saturation[i] = fluidVolume[i] > 0.0 ? 1.0 : 0.0;
+      return;
+    }
+    double n = (m / rho[i]) * kernel.w0();
+    for (Index jIndex : same.of(i)) {
+      const std::size_t j = static_cast<std::size_t>(jIndex);
+      n += (m / rho[j]) * kernel.w((x[i] - x[j]).norm());
+    }
+    saturation[i] = std::clamp(fluidVolume[i] / (phi * n), 0.0, 1.0);
+  });
+}
+
 } // namespace
 
 void registerDensityFields(ParticleSet& set) {
@@ -16,77 +167,19 @@ void registerDensityFields(ParticleSet& set) {
   set.addReal(field::rhoTilde);
   set.addReal(field::alpha);
   set.addVec3(field::gradSum);
+  if (set.kind() == SetKind::Porous) {
+    set.addReal(field::saturation, Output);
+    set.addReal(kFluidVolume);
+  } else {
+    set.addReal(field::localPorosity, Output);
+  }
 }
 
 void computeDensities(const StepContext& ctx, PairGradients& gradients) {
-  const ParticleSystem& ps = ctx.particles;
-  const CubicKernel& kernel = ctx.kernel;
-  gradients.resize(ps.size());
-  for (std::size_t a : ctx.dynamicSets) {
-    ParticleSet& set = ctx.particles[a];
-    const std::vector<Vec3>& x = set.x();
-    const double volume = set.particleVolume;
-    const double rhoMax = set.restDensity;
-    auto& rhoTilde = set.real(field::rhoTilde);
-    auto& density = set.real(field::density);
-    auto& alpha = set.real(field::alpha);
-    auto& gradSum = set.vec3(field::gradSum);
-    const NeighbourList& same = ctx.search.list(a, a);
-    std::vector<double>& sameFactors = gradients.of(a, a);
-    sameFactors.resize(same.totalPairs());
-
-    // Wall lists and their factor arrays, gathered once so the particle loop stays flat.
-    struct Wall {
-      const NeighbourList* list;
-      const std::vector<Vec3>* x;
-      const std::vector<double>* volume;
-      std::vector<double>* factors;
-    };
-    std::vector<Wall> walls;
-    for (std::size_t k : ctx.boundarySets) {
-      auto& factors = gradients.of(a, k);
-      factors.resize(ctx.search.list(a, k).totalPairs());
-      walls.push_back({&ctx.search.list(a, k), &ps[k].x(), &ps[k].real(kBoundaryVolumeField), &factors});
-    }
-
-    parallel::forEach(set.size(), [&](std::size_t i) {
-      const Vec3 xi = x[i];
-      double sumW = kernel.w0();
-      Vec3 g = Vec3::Zero();
-      double q = 0.0;
-      std::size_t pair = same.offset(i);
-      for (Index j : same.of(i)) {
-        const Vec3 xij = xi - x[static_cast<std::size_t>(j)];
-        const double dist = xij.norm();
-        const double s = kernel.gradFactor(dist);
-        sameFactors[pair++] = s;
-        sumW += kernel.w(dist);
-        g += s * xij;
-        q += s * s * xij.squaredNorm();
-      }
-      double rt = volume * sumW;
-      g *= volume;
-      q *= volume * volume;
-      for (const Wall& wall : walls) {
-        std::size_t wp = wall.list->offset(i);
-        for (Index k : wall.list->of(i)) {
-          const std::size_t kk = static_cast<std::size_t>(k);
-          const Vec3 xik = xi - (*wall.x)[kk];
-          const double dist = xik.norm();
-          const double s = kernel.gradFactor(dist);
-          (*wall.factors)[wp++] = s;
-          const double vk = (*wall.volume)[kk];
-          rt += vk * kernel.w(dist);
-          g += (vk * s) * xik;
-        }
-      }
-      rhoTilde[i] = rt;
-      density[i] = rhoMax * rt;
-      gradSum[i] = g;
-      const double denom = g.squaredNorm() + q;
-      alpha[i] = denom > kAlphaThreshold ? 1.0 / denom : 0.0;
-    });
-  }
+  gradients.resize(ctx.particles.size());
+  for (std::size_t a : ctx.dynamicSets) computeSetDensities(ctx, a, gradients);
+  for (std::size_t a : ctx.dynamicSets)
+    if (ctx.materials[a]) computeSaturation(ctx, a);
 }
 
 } // namespace poro

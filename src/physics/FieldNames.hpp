@@ -4,11 +4,16 @@
 namespace poro::field {
 
 // Restart state.
-inline constexpr const char* pi = "pi";             ///< pi = rho^max p / rho^2 of the last pressure solve [m^2/s^2]
-inline constexpr const char* deltaV = "deltaV";     ///< last implicit increment u - v^n (CG warm start) [m/s]
+inline constexpr const char* pi = "pi";         ///< pi = rho^max p / rho^2 of the last pressure solve [m^2/s^2]
+inline constexpr const char* deltaV = "deltaV"; ///< last implicit increment u - v^n (CG warm start) [m/s]
+inline constexpr const char* fixed = "fixed"; ///< porous: 1 = Fixed (held in place, METHOD.md §4.2), 0 = Active (Int)
+inline constexpr const char* restPosition = "X";        ///< porous: initial position X (METHOD.md §4.1) [m]
+inline constexpr const char* materialId = "materialId"; ///< porous: index of the material in porosityProperties (Int)
 // Output only.
-inline constexpr const char* density = "density";   ///< rho [kg/m^3]
-inline constexpr const char* pressure = "pressure"; ///< p = pi rho^2 / rho^max [Pa]
+inline constexpr const char* density = "density";             ///< rho [kg/m^3]
+inline constexpr const char* pressure = "pressure";           ///< p = pi rho^2 / rho^max [Pa]
+inline constexpr const char* saturation = "saturation";       ///< porous: S (Eq. 12), in [0, 1]
+inline constexpr const char* localPorosity = "localPorosity"; ///< fluid: phi^loc, share of the volume open to fluid
 // Scratch, recomputed every step.
 inline constexpr const char* rhoTilde = "rhoTilde"; ///< normalised density rho / rho^max
 inline constexpr const char* rhoStar = "rhoStar";   ///< predicted normalised density (Eq. 6)

@@ -21,8 +21,8 @@ public:
 
 private:
   const StepContext* ctx_ = nullptr;
-  std::size_t fluidSet_ = 0;  ///< index of the fluid set in the particle system
-  std::size_t fluidPart_ = 0; ///< its part in the block vectors
+  std::size_t fluidSet_ = 0;                         ///< index of the fluid set in the particle system
+  std::size_t fluidPart_ = 0;                        ///< its part in the block vectors
   std::vector<double> pairCoefficient_;              ///< kappa_ab s_ab per fluid pair (gradW = s x)
   std::vector<std::vector<double>> wallCoefficient_; ///< kappa_ak s_ak per wall pair, per boundary set
 };

@@ -1,9 +1,10 @@
 #include "physics/ImplicitSolver.hpp"
 
 #include "core/Parallel.hpp"
+#include "physics/FieldNames.hpp"
+#include "physics/VolumeFactors.hpp"
 
 #include <Eigen/LU>
-#include "physics/FieldNames.hpp"
 
 namespace poro {
 
@@ -15,6 +16,19 @@ const char* const kZ = "cgZ";
 const char* const kP = "cgP";
 const char* const kQ = "cgQ";
 const char* const kInverseDiagonal = "cgInverseDiagonal";
+
+/// Rows of Fixed particles hold their known velocity: (A u)_a = m u_a, b_a = m v^n_a, D_a = m I. Their
+/// residual and search directions then stay zero, which equals moving them to the right-hand side
+/// (METHOD.md §6.5.8); the terms' couplings of Active rows to them remain.
+template <class Row>
+void overwriteFixedRows(const StepContext& ctx, std::size_t part, std::size_t size, const Row& row) {
+  const ParticleSet& set = ctx.particles[ctx.dynamicSets[part]];
+  const std::int64_t* fixed = fixedFlags(set);
+  if (!fixed) return;
+  parallel::forEach(size, [&](std::size_t i) {
+    if (fixed[i]) row(i, set.mass);
+  });
+}
 } // namespace
 
 class ImplicitSolver::Operator final : public linalg::BlockOperator {
@@ -62,6 +76,8 @@ void ImplicitSolver::apply(const linalg::BlockVector& u, const linalg::BlockVect
     parallel::forEach(u[p].size, [&](std::size_t i) { out[i] = m * in[i]; });
   }
   for (const ImplicitTerm* term : enabled_) term->addApply(u, au);
+  for (std::size_t p = 0; p < u.size(); ++p)
+    overwriteFixedRows(*ctx_, p, u[p].size, [&](std::size_t i, double m) { au[p].data[i] = m * u[p].data[i]; });
 }
 
 void ImplicitSolver::diagonal(const linalg::BlockDiagonal& d) const {
@@ -71,6 +87,8 @@ void ImplicitSolver::diagonal(const linalg::BlockDiagonal& d) const {
     parallel::forEach(d[p].size, [&](std::size_t i) { out[i] = m * Mat3::Identity(); });
   }
   for (const ImplicitTerm* term : enabled_) term->addDiagonal(d);
+  for (std::size_t p = 0; p < d.size(); ++p)
+    overwriteFixedRows(*ctx_, p, d[p].size, [&](std::size_t i, double m) { d[p].data[i] = m * Mat3::Identity(); });
 }
 
 void ImplicitSolver::rhs(const linalg::BlockVector& b) const {
@@ -82,6 +100,10 @@ void ImplicitSolver::rhs(const linalg::BlockVector& b) const {
     parallel::forEach(b[p].size, [&](std::size_t i) { out[i] = m * v[i]; });
   }
   for (const ImplicitTerm* term : enabled_) term->addRhs(b);
+  for (std::size_t p = 0; p < b.size(); ++p) {
+    const auto& v = ctx_->particles[ctx_->dynamicSets[p]].v();
+    overwriteFixedRows(*ctx_, p, b[p].size, [&](std::size_t i, double m) { b[p].data[i] = m * v[i]; });
+  }
 }
 
 linalg::CgResult ImplicitSolver::solve(const StepContext& ctx) {
@@ -94,9 +116,10 @@ linalg::CgResult ImplicitSolver::solve(const StepContext& ctx) {
       ParticleSet& set = ctx.particles[a];
       auto& v = set.v();
       auto& dv = set.vec3(field::deltaV);
+      const std::int64_t* fixed = fixedFlags(set);
       parallel::forEach(set.size(), [&](std::size_t i) {
         dv[i].setZero();
-        v[i] += gdt;
+        if (!(fixed && fixed[i])) v[i] += gdt;
       });
     }
     return result;
@@ -126,12 +149,17 @@ linalg::CgResult ImplicitSolver::solve(const StepContext& ctx) {
   const linalg::CgWork work{view(ctx, kR), view(ctx, kZ), view(ctx, kP), view(ctx, kQ)};
   result = linalg::solveCg(Operator(*this), inverse, b, u, work, {settings_.tolerance, settings_.maxIterations});
 
-  for (std::size_t a : ctx.dynamicSets) { // v* = u + dt g, dv = u - v^n (METHOD.md §6.5.9)
+  for (std::size_t a : ctx.dynamicSets) { // v* = u + dt g, dv = u - v^n; Fixed: v* = v^n (METHOD.md §6.5.9)
     ParticleSet& set = ctx.particles[a];
     auto& v = set.v();
     auto& dv = set.vec3(field::deltaV);
     const auto& solution = set.vec3(kUnknown);
+    const std::int64_t* fixed = fixedFlags(set);
     parallel::forEach(set.size(), [&](std::size_t i) {
+      if (fixed && fixed[i]) {
+        dv[i].setZero();
+        return;
+      }
       dv[i] = solution[i] - v[i];
       v[i] = solution[i] + gdt;
     });

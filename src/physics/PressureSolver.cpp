@@ -2,6 +2,7 @@
 
 #include "core/Parallel.hpp"
 #include "physics/FieldNames.hpp"
+#include "physics/VolumeFactors.hpp"
 #include "sph/BoundaryVolume.hpp"
 
 #include <algorithm>
@@ -9,7 +10,29 @@
 namespace poro {
 
 namespace {
-const char* const kResidual = "pressureResidual"; ///< max(rho~ after the sweep's pressure - 1, 0)
+const char* const kResidual = "pressureResidual"; ///< max(-r_a, 0): the compression left after the sweep's pressure
+
+/// A dynamic neighbour set of set a with its coupling and per-pair gradient factors.
+struct PartnerView {
+  const NeighbourList* list;
+  const std::vector<Vec3>* x;
+  const std::vector<double>* factors;
+  const std::int64_t* objectB;
+  SetCoupling coupling;
+  const std::vector<Vec3>* v;
+  const std::vector<Vec3>* accel;
+  const std::vector<double>* pi;
+};
+
+std::vector<PartnerView> partnersOf(const StepContext& ctx, std::size_t a) {
+  std::vector<PartnerView> result;
+  for (const SetCoupling& c : couplingsOf(ctx, a)) {
+    const ParticleSet& b = ctx.particles[c.other];
+    result.push_back({&ctx.search.list(a, c.other), &b.x(), &ctx.gradients.of(a, c.other),
+                      b.integer(field::objectId).data(), c, &b.v(), &b.vec3(field::accelP), &b.real(field::pi)});
+  }
+  return result;
+}
 
 /// Boundary neighbour data of one dynamic set, gathered once per call.
 struct WallView {
@@ -28,6 +51,35 @@ std::vector<WallView> wallsOf(const StepContext& ctx, std::size_t a) {
   }
   return walls;
 }
+
+/// sum_b f(a<-b) V s_ab (q_b . x_ab) over the dynamic partners of particle i, for a per-particle vector
+/// field q (velocities for Eq. 6, pressure accelerations for the operator).
+double partnerProjection(const std::vector<PartnerView>& partners, const Vec3& xi, std::int64_t objectI, std::size_t i,
+                         bool velocities) {
+  double sum = 0.0;
+  for (const PartnerView& p : partners) {
+    if (p.coupling.factor == 0.0 && p.coupling.ownFactor == 0.0) continue;
+    const std::vector<Vec3>& q = velocities ? *p.v : *p.accel;
+    const auto& xb = *p.x;
+    const auto& s = *p.factors;
+    std::size_t pair = p.list->offset(i);
+    double part = 0.0;
+    if (p.coupling.byObject) {
+      for (Index jIndex : p.list->of(i)) {
+        const std::size_t j = static_cast<std::size_t>(jIndex);
+        part += p.coupling.factorOf(objectI == p.objectB[j]) * s[pair++] * q[j].dot(xi - xb[j]);
+      }
+    } else {
+      for (Index jIndex : p.list->of(i)) {
+        const std::size_t j = static_cast<std::size_t>(jIndex);
+        part += s[pair++] * q[j].dot(xi - xb[j]);
+      }
+      part *= p.coupling.factor;
+    }
+    sum += part;
+  }
+  return sum;
+}
 } // namespace
 
 void PressureSolver::registerFields(ParticleSet& set) {
@@ -43,22 +95,17 @@ void PressureSolver::predictDensities(const StepContext& ctx) const {
     ParticleSet& set = ctx.particles[a];
     const auto& x = set.x();
     const auto& v = set.v();
+    const auto& object = set.integer(field::objectId);
     const auto& rhoTilde = set.real(field::rhoTilde);
     const auto& gradSum = set.vec3(field::gradSum);
     auto& rhoStar = set.real(field::rhoStar);
-    const NeighbourList& same = ctx.search.list(a, a);
-    const auto& factors = ctx.gradients.of(a, a);
     const double volume = set.particleVolume;
+    const auto partners = partnersOf(ctx, a);
     const auto walls = wallsOf(ctx, a);
     const double dt = ctx.dt;
     parallel::forEach(set.size(), [&](std::size_t i) {
-      // sum_b V (v_a - v_b).gradW = v_a.G_a - V sum_b s_ab v_b.x_ab  (G holds the v_a part of every term)
-      double others = 0.0;
-      std::size_t p = same.offset(i);
-      for (Index j : same.of(i)) {
-        const std::size_t jj = static_cast<std::size_t>(j);
-        others += factors[p++] * v[jj].dot(x[i] - x[jj]);
-      }
+      // sum_b f V (v_a - v_b).gradW = v_a.G_a - V sum_b f s_ab v_b.x_ab  (G holds the v_a part of every term)
+      const double others = partnerProjection(partners, x[i], object[i], i, true);
       double change = v[i].dot(gradSum[i]) - volume * others;
       for (const WallView& w : walls) {
         std::size_t q = w.list->offset(i);
@@ -73,27 +120,63 @@ void PressureSolver::predictDensities(const StepContext& ctx) const {
 }
 
 void PressureSolver::computeAccelerations(const StepContext& ctx) const {
-  // a^p_a = -pi_a G_a - V sum_b pi_b s_ab x_ab: the pi_a part of every pair and wall term is pi_a G_a
-  // (fluid-fluid h_ab = 1 for equal masses, Eq. 7 line 1; walls are one-sided).
+  // a^p_a = -pi_a G_a - V sum_b h_ab pi_b s_ab x_ab: the pi_a part of every pair and wall term is pi_a G_a;
+  // h_ab is 0 across phases (Eq. 7 line 2, walls are one-sided), f(b<-a) m_b/m_a within one (Eq. 7, 8).
   for (std::size_t a : ctx.dynamicSets) {
     ParticleSet& set = ctx.particles[a];
     const auto& x = set.x();
     const auto& pi = set.real(field::pi);
+    const auto& object = set.integer(field::objectId);
     const auto& gradSum = set.vec3(field::gradSum);
     auto& accel = set.vec3(field::accelP);
-    const NeighbourList& same = ctx.search.list(a, a);
-    const auto& factors = ctx.gradients.of(a, a);
+    const std::int64_t* fixed = fixedFlags(set);
     const double volume = set.particleVolume;
+    auto partners = partnersOf(ctx, a);
+    partners.erase(std::remove_if(partners.begin(), partners.end(),
+                                  [](const PartnerView& p) {
+                                    return p.coupling.coupling == 0.0 && p.coupling.ownCoupling == 0.0;
+                                  }),
+                   partners.end());
     parallel::forEach(set.size(), [&](std::size_t i) {
+      if (fixed && fixed[i]) {
+        accel[i].setZero();
+        return;
+      }
       Vec3 sum = Vec3::Zero();
-      std::size_t p = same.offset(i);
-      for (Index j : same.of(i)) {
-        const std::size_t jj = static_cast<std::size_t>(j);
-        sum += (pi[jj] * factors[p++]) * (x[i] - x[jj]);
+      for (const PartnerView& p : partners) {
+        const auto& piB = *p.pi;
+        const auto& xb = *p.x;
+        const auto& s = *p.factors;
+        std::size_t pair = p.list->offset(i);
+        for (Index jIndex : p.list->of(i)) {
+          const std::size_t j = static_cast<std::size_t>(jIndex);
+          const double h = p.coupling.couplingOf(object[i] == p.objectB[j]);
+          sum += (h * piB[j] * s[pair++]) * (x[i] - xb[j]);
+        }
       }
       accel[i] = -pi[i] * gradSum[i] - volume * sum;
     });
   }
+}
+
+std::vector<std::vector<double>> PressureSolver::applyOperator(const StepContext& ctx) const {
+  computeAccelerations(ctx);
+  std::vector<std::vector<double>> result;
+  for (std::size_t a : ctx.dynamicSets) {
+    const ParticleSet& set = ctx.particles[a];
+    const auto& x = set.x();
+    const auto& object = set.integer(field::objectId);
+    const auto& gradSum = set.vec3(field::gradSum);
+    const auto& accel = set.vec3(field::accelP);
+    const auto partners = partnersOf(ctx, a);
+    std::vector<double> api(set.size());
+    parallel::forEach(set.size(), [&](std::size_t i) {
+      const double others = partnerProjection(partners, x[i], object[i], i, false);
+      api[i] = ctx.dt * ctx.dt * (accel[i].dot(gradSum[i]) - set.particleVolume * others);
+    });
+    result.push_back(std::move(api));
+  }
+  return result;
 }
 
 PressureStats PressureSolver::solve(const StepContext& ctx) const {
@@ -102,46 +185,51 @@ PressureStats PressureSolver::solve(const StepContext& ctx) const {
   const double omega = settings_.relaxation;
   const double tolerance = settings_.maxDensityError / 100.0;
 
-  for (std::size_t a : ctx.dynamicSets) { // warm start (METHOD.md §6.7)
+  for (std::size_t a : ctx.dynamicSets) { // warm start (METHOD.md §6.7); Fixed particles keep pi = 0
     ParticleSet& set = ctx.particles[a];
     auto& pi = set.real(field::pi);
     const auto& rhoStar = set.real(field::rhoStar);
+    const std::int64_t* fixed = fixedFlags(set);
     const double factor = settings_.warmStart;
-    parallel::forEach(set.size(), [&](std::size_t i) { pi[i] = rhoStar[i] > 1.0 ? factor * pi[i] : 0.0; });
+    parallel::forEach(set.size(),
+                      [&](std::size_t i) { pi[i] = rhoStar[i] > 1.0 && !(fixed && fixed[i]) ? factor * pi[i] : 0.0; });
   }
 
   PressureStats stats;
   for (int it = 1; it <= settings_.maxIterations; ++it) {
     computeAccelerations(ctx);
+    // Residuals use a^p of the sweep's start only, so updating pi set by set is pure Jacobi across sets.
     double worstMean = 0.0, worstMax = 0.0;
     for (std::size_t a : ctx.dynamicSets) {
       ParticleSet& set = ctx.particles[a];
       const auto& x = set.x();
-      auto& pi = set.real(field::pi);
-      const auto& alpha = set.real(field::alpha);
+      const auto& object = set.integer(field::objectId);
       const auto& rhoStar = set.real(field::rhoStar);
       const auto& gradSum = set.vec3(field::gradSum);
       const auto& accel = set.vec3(field::accelP);
       auto& residual = set.real(kResidual);
-      const NeighbourList& same = ctx.search.list(a, a);
-      const auto& factors = ctx.gradients.of(a, a);
+      auto& pi = set.real(field::pi);
+      const auto& alpha = set.real(field::alpha);
+      const std::int64_t* fixed = fixedFlags(set);
       const double volume = set.particleVolume;
+      const auto partners = partnersOf(ctx, a);
       const std::size_t n = set.size();
-      // (A pi)_a = dt^2 [a_a.G_a - V sum_b s_ab a_b.x_ab]; r = (1 - rho~*) - (A pi); error max(-r, 0).
+      // (A pi)_a = dt^2 [a_a.G_a - V sum_b f s_ab a_b.x_ab]; r = (1 - rho~*) - (A pi); error max(-r, 0).
       const double errorSum = parallel::sum<double>(n, [&](std::size_t i) {
-        double others = 0.0;
-        std::size_t p = same.offset(i);
-        for (Index j : same.of(i)) {
-          const std::size_t jj = static_cast<std::size_t>(j);
-          others += factors[p++] * accel[jj].dot(x[i] - x[jj]);
+        if (fixed && fixed[i]) {
+          residual[i] = 0.0;
+          return 0.0;
         }
+        const double others = partnerProjection(partners, x[i], object[i], i, false);
         const double api = dt2 * (accel[i].dot(gradSum[i]) - volume * others);
         const double r = (1.0 - rhoStar[i]) - api;
         residual[i] = std::max(-r, 0.0);
         pi[i] = std::max(pi[i] - omega * r * alpha[i] / dt2, 0.0);
         return residual[i];
       });
-      const double mean = n > 0 ? errorSum / static_cast<double>(n) : 0.0;
+      const std::size_t active =
+          fixed ? parallel::sum<std::size_t>(n, [&](std::size_t i) -> std::size_t { return fixed[i] ? 0 : 1; }) : n;
+      const double mean = active > 0 ? errorSum / static_cast<double>(active) : 0.0;
       worstMean = std::max(worstMean, mean);
       worstMax = std::max(worstMax, parallel::max(n, 0.0, [&](std::size_t i) { return residual[i]; }));
     }

@@ -28,6 +28,9 @@ public:
   /// Solves for pi, then v <- v* + dt a^p for every dynamic set. Needs predictDensities first.
   PressureStats solve(const StepContext& ctx) const;
 
+  /// (A pi)_a of the current pi for every particle, by dynamic set (tests probe the operator with it).
+  std::vector<std::vector<double>> applyOperator(const StepContext& ctx) const;
+
 private:
   void computeAccelerations(const StepContext& ctx) const;
   PressureSettings settings_;

@@ -3,12 +3,16 @@
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "core/Parallel.hpp"
+#include "physics/Buoyancy.hpp"
 #include "physics/Densities.hpp"
 #include "physics/FieldNames.hpp"
 #include "physics/FluidViscosity.hpp"
+#include "physics/PorousDrag.hpp"
 #include "physics/TimeStepSize.hpp"
+#include "physics/VolumeFactors.hpp"
 #include "sph/BoundaryVolume.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -21,6 +25,8 @@ namespace {
 std::vector<std::unique_ptr<ImplicitTerm>> makeImplicitTerms() {
   std::vector<std::unique_ptr<ImplicitTerm>> terms;
   terms.push_back(std::make_unique<FluidViscosity>());
+  terms.push_back(std::make_unique<PorousDrag>());
+  terms.push_back(std::make_unique<Buoyancy>());
   return terms;
 }
 
@@ -34,13 +40,15 @@ std::string formatDuration(double seconds) {
 
 } // namespace
 
-Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, const SolverSettings& settings,
-               const TimeControl& control, const RunState& start)
-    : particles_(std::move(particles)), fluid_(fluid), settings_(settings), control_(control), state_(start),
-      kernel_(particles_.supportRadius()), search_(particles_.supportRadius()),
+Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vector<PorousMaterial> materials,
+               const SolverSettings& settings, const TimeControl& control, const RunState& start)
+    : particles_(std::move(particles)), fluid_(fluid), materials_(std::move(materials)), settings_(settings),
+      control_(control), state_(start), kernel_(particles_.supportRadius()), search_(particles_.supportRadius()),
       implicit_(settings.implicit, makeImplicitTerms()), pressure_(settings.pressure) {
   if (settings_.threads > 0) parallel::setThreads(settings_.threads);
   const double volume = particles_.particleVolume();
+  setMaterials_.assign(particles_.size(), nullptr);
+  std::size_t fluidSets = 0;
   for (std::size_t s = 0; s < particles_.size(); ++s) {
     ParticleSet& set = particles_[s];
     set.particleVolume = volume;
@@ -52,6 +60,7 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, const Sol
       PressureSolver::registerFields(set);
       ImplicitSolver::registerFields(set);
       dynamicSets_.push_back(s);
+      ++fluidSets;
       break;
     case SetKind::Boundary:
       // Walls are static; one Morton sort makes their order (and so every sum over them) a function of
@@ -60,16 +69,46 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, const Sol
       computeBoundaryVolumes(set, kernel_);
       boundarySets_.push_back(s);
       break;
-    case SetKind::Porous:
-      throw InputError(std::string("particle set '") + set.name() +
-                       "': porous particle sets are not supported by this version of poroSph");
+    case SetKind::Porous: {
+      auto material = std::find_if(materials_.begin(), materials_.end(),
+                                   [&](const PorousMaterial& m) { return m.name == set.name(); });
+      if (material == materials_.end())
+        throw InputError("porous particle set '" + set.name() + "': no such material in constant/porosityProperties");
+      set.particleVolume = volume;
+      setUpPorousSet(set, *material);
+      auto& id = set.integer(field::materialId);
+      std::fill(id.begin(), id.end(), static_cast<std::int64_t>(material - materials_.begin()));
+      setMaterials_[s] = &*material;
+      dynamicSets_.push_back(s);
+      break;
+    }
     }
   }
+  if (fluidSets > 1) throw InputError("more than one fluid particle set; PoroSPH simulates one fluid");
   if (state_.nextDeltaT <= 0.0) state_.nextDeltaT = control_.deltaT;
 }
 
+void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
+  set.restDensity = material.maxDensity();
+  set.mass = material.bulkDensity * set.particleVolume;
+  registerDensityFields(set);
+  PressureSolver::registerFields(set);
+  ImplicitSolver::registerFields(set);
+  set.addInt(field::materialId, Restart);
+  auto& fixed = set.addInt(field::fixed, Restart);
+  auto& rest = set.addVec3(field::restPosition, Restart);
+  // The rest state is the sampled one: X = x at step 0, read back from the time directory afterwards.
+  if (state_.step == 0) rest = set.x();
+  if (material.fixedBox) { // strictly inside the material's fixedBox at X (METHOD.md §4.2)
+    const auto& [lo, hi] = *material.fixedBox;
+    for (std::size_t i = 0; i < set.size(); ++i)
+      if ((rest[i].array() > lo.array()).all() && (rest[i].array() < hi.array()).all()) fixed[i] = 1;
+  }
+}
+
 StepContext Solver::context(double deltaT) {
-  return StepContext{particles_, search_, gradients_, kernel_, fluid_, deltaT, dynamicSets_, boundarySets_};
+  return StepContext{particles_, search_,      gradients_,    kernel_,      fluid_,
+                     deltaT,     dynamicSets_, boundarySets_, setMaterials_};
 }
 
 void Solver::searchNeighbours() {
@@ -86,7 +125,7 @@ void Solver::searchNeighbours() {
   search_.update(positions, wanted);
 }
 
-void Solver::step(double deltaT) {
+StepContext Solver::beginStep(double deltaT) {
   StepContext ctx = context(deltaT);
   {
     ScopedPhase phase(phases_, "search");
@@ -96,12 +135,24 @@ void Solver::step(double deltaT) {
     ScopedPhase phase(phases_, "densities");
     computeDensities(ctx, gradients_);
   }
+  return ctx;
+}
+
+void Solver::step(double deltaT) {
+  const StepContext ctx = beginStep(deltaT);
+  report_.maxFluidDensity = 0.0;
+  for (std::size_t a : dynamicSets_)
+    if (particles_[a].kind() == SetKind::Fluid) {
+      const auto& rho = particles_[a].real(field::rhoTilde);
+      report_.maxFluidDensity = parallel::max(rho.size(), 0.0, [&](std::size_t i) { return rho[i]; });
+    }
   {
     ScopedPhase phase(phases_, "implicit");
     report_.implicit = implicit_.solve(ctx);
     if (!report_.implicit.converged)
-      log::warning("implicit solve reached implicit.maxIterations = " + std::to_string(settings_.implicit.maxIterations) +
-                   " with relative residual " + std::to_string(report_.implicit.relativeResidual));
+      log::warning(
+          "implicit solve reached implicit.maxIterations = " + std::to_string(settings_.implicit.maxIterations) +
+          " with relative residual " + std::to_string(report_.implicit.relativeResidual));
   }
   {
     ScopedPhase phase(phases_, "pressure");
@@ -114,7 +165,10 @@ void Solver::step(double deltaT) {
       ParticleSet& set = particles_[a];
       auto& x = set.x();
       const auto& v = set.v();
-      parallel::forEach(set.size(), [&](std::size_t i) { x[i] += deltaT * v[i]; });
+      const std::int64_t* fixed = fixedFlags(set);
+      parallel::forEach(set.size(), [&](std::size_t i) {
+        if (!(fixed && fixed[i])) x[i] += deltaT * v[i];
+      });
     }
     checkFinite();
     state_.time += deltaT;
@@ -140,8 +194,8 @@ void Solver::checkFinite() const {
     const ParticleSet& set = particles_[a];
     const auto& x = set.x();
     const auto& v = set.v();
-    const std::size_t bad =
-        parallel::sum<std::size_t>(set.size(), [&](std::size_t i) -> std::size_t { return !(x[i].allFinite() && v[i].allFinite()); });
+    const std::size_t bad = parallel::sum<std::size_t>(
+        set.size(), [&](std::size_t i) -> std::size_t { return !(x[i].allFinite() && v[i].allFinite()); });
     if (bad == 0) continue;
     std::size_t first = 0;
     while (first < set.size() && x[first].allFinite() && v[first].allFinite()) ++first;
@@ -190,9 +244,10 @@ void Solver::run(const Writer& write) {
     const StepReport& r = report_;
     std::ostringstream out;
     out << std::setprecision(6) << "Time = " << state_.time << "  (step " << state_.step << ")\n"
-        << "deltaT = " << r.deltaT << "  max|v| = " << r.maxSpeed << " m/s\n"
-        << "pressure: " << r.pressure.iterations << " sweeps, density error " << r.pressure.meanError
-        << " % (max " << r.pressure.maxError << " %)" << (r.pressure.converged ? "" : "  NOT CONVERGED") << '\n'
+        << "deltaT = " << r.deltaT << "  max|v| = " << r.maxSpeed << " m/s  max fluid density = " << r.maxFluidDensity
+        << " rho0\n"
+        << "pressure: " << r.pressure.iterations << " sweeps, density error " << r.pressure.meanError << " % (max "
+        << r.pressure.maxError << " %)" << (r.pressure.converged ? "" : "  NOT CONVERGED") << '\n'
         << "implicit: " << r.implicit.iterations << " CG iterations, residual " << r.implicit.relativeResidual << '\n';
     const double elapsed = clock.seconds();
     const double done = (state_.time - startTime) / (control_.endTime - startTime);
@@ -200,9 +255,9 @@ void Solver::run(const Writer& write) {
         << " s  ETA = " << formatDuration(done > 0 ? elapsed * (1.0 - done) / done : 0.0) << '\n';
     log::info(out.str());
     if (!r.pressure.converged)
-      log::warning("pressure solve reached pressure.maxIterations = " + std::to_string(settings_.pressure.maxIterations) +
-                   " with density error " + std::to_string(r.pressure.meanError) +
-                   " %; consider a smaller deltaT or maxCourant");
+      log::warning("pressure solve reached pressure.maxIterations = " +
+                   std::to_string(settings_.pressure.maxIterations) + " with density error " +
+                   std::to_string(r.pressure.meanError) + " %; consider a smaller deltaT or maxCourant");
     const bool last = !(state_.time < control_.endTime - endSlack());
     if (isWriteStep(previousTime) || last) {
       ScopedPhase phase(phases_, "output");

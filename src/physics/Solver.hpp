@@ -6,6 +6,7 @@
 #include "linalg/ConjugateGradient.hpp"
 #include "physics/FluidProperties.hpp"
 #include "physics/ImplicitSolver.hpp"
+#include "physics/PorousMaterial.hpp"
 #include "physics/PressureSolver.hpp"
 #include "physics/SolverSettings.hpp"
 #include "physics/StepContext.hpp"
@@ -29,13 +30,15 @@ struct StepReport {
   PressureStats pressure;
   linalg::CgResult implicit;
   double maxSpeed = 0.0;
+  double maxFluidDensity = 0.0; ///< largest fluid rho~ = rho^/rho_f^0 at the start of the step (Eq. 4)
 };
 
 class Solver {
 public:
   /// Takes the particles of a case (loaded from 0/ or a restart time directory) and validated settings.
-  Solver(ParticleSystem particles, const FluidProperties& fluid, const SolverSettings& settings,
-         const TimeControl& control, const RunState& start);
+  /// Each porous set is named after its material in `materials` (constant/porosityProperties).
+  Solver(ParticleSystem particles, const FluidProperties& fluid, std::vector<PorousMaterial> materials,
+         const SolverSettings& settings, const TimeControl& control, const RunState& start);
 
   /// Called at each write time and at the end; receives the solver to read particles and state from.
   using Writer = std::function<void(const Solver&)>;
@@ -43,6 +46,11 @@ public:
   void run(const Writer& write);
   /// One time step of size `deltaT` (METHOD.md §5).
   void step(double deltaT);
+  /// Steps 1-4 of METHOD.md §5 at the current positions (neighbour search, densities, alpha, saturation,
+  /// local porosity) and the context the rest of the step uses; step() starts with it, tests probe it.
+  StepContext beginStep(double deltaT);
+  ImplicitSolver& implicitSolver() { return implicit_; }
+  const PressureSolver& pressureSolver() const { return pressure_; }
 
   const ParticleSystem& particles() const { return particles_; }
   ParticleSystem& particles() { return particles_; }
@@ -62,8 +70,12 @@ private:
   bool isWriteStep(double previousTime) const;
   double endSlack() const;
 
+  void setUpPorousSet(ParticleSet& set, const PorousMaterial& material);
+
   ParticleSystem particles_;
   FluidProperties fluid_;
+  std::vector<PorousMaterial> materials_;
+  std::vector<const PorousMaterial*> setMaterials_; ///< by set index
   SolverSettings settings_;
   TimeControl control_;
   RunState state_;

@@ -2,6 +2,7 @@
 /// What every part of one time step sees (STYLE.md §5: no globals; everything arrives through here).
 
 #include "physics/FluidProperties.hpp"
+#include "physics/PorousMaterial.hpp"
 #include "sph/Kernel.hpp"
 #include "sph/NeighbourSearch.hpp"
 #include "sph/ParticleSystem.hpp"
@@ -14,7 +15,10 @@ namespace poro {
 /// lists so the iterative solvers do not re-evaluate the kernel.
 class PairGradients {
 public:
-  void resize(std::size_t sets) { factors_.assign(sets * sets, {}); sets_ = sets; }
+  void resize(std::size_t sets) {
+    factors_.assign(sets * sets, {});
+    sets_ = sets;
+  }
   std::vector<double>& of(std::size_t a, std::size_t b) { return factors_[a * sets_ + b]; }
   const std::vector<double>& of(std::size_t a, std::size_t b) const { return factors_[a * sets_ + b]; }
 
@@ -29,9 +33,10 @@ struct StepContext {
   const PairGradients& gradients;
   const CubicKernel& kernel;
   const FluidProperties& fluid;
-  double dt;                        ///< the step size of this step [s]
-  std::vector<std::size_t> dynamicSets;  ///< fluid and porous sets: the unknowns
-  std::vector<std::size_t> boundarySets; ///< walls: known positions and velocities
+  double dt;                                    ///< the step size of this step [s]
+  std::vector<std::size_t> dynamicSets;         ///< fluid and porous sets: the unknowns
+  std::vector<std::size_t> boundarySets;        ///< walls: known positions and velocities
+  std::vector<const PorousMaterial*> materials; ///< by set index: the material of a porous set, else null
 };
 
 } // namespace poro

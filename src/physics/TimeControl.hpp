@@ -21,7 +21,7 @@ struct TimeControl {
   double minDeltaT = 1e-4;       ///< [s]
   double maxDeltaT = 5e-3;       ///< [s]
   WriteControl writeControl = WriteControl::RunTime;
-  double writeInterval = 0.0;    ///< seconds (runTime) or steps (timeStep), > 0, required
+  double writeInterval = 0.0; ///< seconds (runTime) or steps (timeStep), > 0, required
 
   /// Reads and validates the time keys (does not check for unknown keys: the file has output keys too).
   static TimeControl read(const Dictionary& dict);

@@ -10,7 +10,7 @@ double cflStepSize(const TimeControl& control, double maxSpeed, double spacing, 
   if (!control.adjustTimeStep) return control.deltaT;
   double dt = maxSpeed > 0.0 ? control.maxCourant * spacing / maxSpeed : control.maxDeltaT;
   if (control.iterationControl) {
-    const double scaled = pressureSweeps > 10 ? 0.9 * previousDeltaT
+    const double scaled = pressureSweeps > 10  ? 0.9 * previousDeltaT
                           : pressureSweeps < 5 ? 1.1 * previousDeltaT
                                                : previousDeltaT;
     dt = std::min(dt, scaled);

@@ -3,6 +3,7 @@
 /// executables, as a user would (tests/regression).
 
 #include "core/Types.hpp"
+#include "io/CaseReader.hpp"
 #include "io/TimeDirectory.hpp"
 
 #include <gtest/gtest.h>
@@ -76,7 +77,9 @@ public:
   int sample() const { return run(POROSPH_SAMPLER); }
   int solve(const std::string& arguments = "-threads 2") const { return run(POROSPH_SOLVER, arguments); }
 
-  ParticleSystem particles(const std::string& time, double radius) const { return readParticles(dir_, time, radius); }
+  ParticleSystem particles(const std::string& time, double radius) const {
+    return readParticles(dir_, time, radius, readPorousMaterials(dir_));
+  }
 
 private:
   std::filesystem::path dir_;

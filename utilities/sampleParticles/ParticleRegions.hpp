@@ -3,10 +3,12 @@
 ///   particleRadius: 0.005
 ///   regions:
 ///     - {name: water, phase: fluid, shape: box, min: [..], max: [..], velocity: [0, 0, 0]}
+///     - {name: bed, phase: porous, material: sand, shape: box, min: [..], max: [..], fixed: false}
 ///     - {name: tank, phase: boundary, shape: container, min: [..], max: [..], layers: 2, open: [yMax]}
 
 #include "core/Types.hpp"
 #include "geometry/LatticeSampling.hpp"
+#include "physics/PorousMaterial.hpp"
 
 #include <string>
 #include <vector>
@@ -15,13 +17,15 @@ namespace poro {
 class Dictionary;
 
 struct ParticleRegion {
-  enum class Phase { Fluid, Boundary };
+  enum class Phase { Fluid, Porous, Boundary };
   enum class Shape { Box, Container };
   std::string name;
   Phase phase = Phase::Fluid;
   Shape shape = Shape::Box;
   Vec3 min = Vec3::Zero(), max = Vec3::Zero();
-  Vec3 velocity = Vec3::Zero(); ///< initial velocity of fluid regions [m/s]
+  Vec3 velocity = Vec3::Zero(); ///< initial velocity of fluid and porous regions [m/s]
+  std::size_t materialId = 0;   ///< porous: index of its material in constant/porosityProperties
+  bool fixed = false;           ///< porous: particles held in place (Fixed, METHOD.md §4.2)
   int layers = 2;               ///< wall layers of a container
   FaceFlags open{};             ///< faces of a container without wall
 };
@@ -30,7 +34,9 @@ struct ParticleDict {
   double particleRadius = 0.0;
   std::vector<ParticleRegion> regions;
 
-  static ParticleDict read(const Dictionary& dict);
+  /// Reads and validates every key. `materials` are those of constant/porosityProperties (empty when the case
+  /// has none): a porous region must name one of them.
+  static ParticleDict read(const Dictionary& dict, const std::vector<PorousMaterial>& materials);
 };
 
 } // namespace poro

@@ -1,11 +1,13 @@
-/// sampleParticles: system/particleDict -> 0/ (fluid.vtp, boundary.vtp, uniform/time) and case.pvd.
+/// sampleParticles: system/particleDict -> 0/ (fluid.vtp, porous.vtp, boundary.vtp, uniform/time) and case.pvd.
 
 #include "ParticleRegions.hpp"
 #include "core/Arguments.hpp"
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "io/CaseReader.hpp"
 #include "io/TimeDirectory.hpp"
+#include "physics/FieldNames.hpp"
 
 #include <filesystem>
 #include <iostream>
@@ -16,9 +18,9 @@ using namespace poro;
 
 namespace {
 
-/// Appends the lattice points of one region to its set with fresh persistent ids.
-void appendRegion(ParticleSet& set, const std::vector<Vec3>& points, const Vec3& velocity, long long objectId,
-                  long long& nextId) {
+/// Appends the lattice points of one region to its set with fresh persistent ids; returns the first new slot.
+std::size_t appendRegion(ParticleSet& set, const std::vector<Vec3>& points, const Vec3& velocity, long long objectId,
+                         long long& nextId) {
   const std::size_t first = set.size();
   set.resize(first + points.size());
   auto& ids = set.integer(field::id);
@@ -29,6 +31,14 @@ void appendRegion(ParticleSet& set, const std::vector<Vec3>& points, const Vec3&
     ids[first + k] = nextId++;
     objects[first + k] = objectId;
   }
+  return first;
+}
+
+bool hasRegion(const ParticleDict& dict, ParticleRegion::Phase phase, std::size_t materialId = 0) {
+  for (const ParticleRegion& region : dict.regions)
+    if (region.phase == phase && (phase != ParticleRegion::Phase::Porous || region.materialId == materialId))
+      return true;
+  return false;
 }
 
 } // namespace
@@ -36,14 +46,16 @@ void appendRegion(ParticleSet& set, const std::vector<Vec3>& points, const Vec3&
 int main(int argc, char* argv[]) try {
   const Arguments args(argc, argv, "sampleParticles",
                        "Samples the regions of system/particleDict into particles and writes the initial time\n"
-                       "directory 0/ (fluid.vtp, boundary.vtp, uniform/time) and case.pvd.");
+                       "directory 0/ (fluid.vtp, porous.vtp, boundary.vtp, uniform/time) and case.pvd. Porous regions\n"
+                       "name a material of constant/porosityProperties.");
   if (args.help()) {
     std::cout << args.usage();
     return 0;
   }
   const fs::path caseDir = args.caseDir();
   const std::string dictPath = (caseDir / "system" / "particleDict").string();
-  const ParticleDict dict = ParticleDict::read(Dictionary::read(dictPath));
+  const std::vector<PorousMaterial> materials = readPorousMaterials(caseDir);
+  const ParticleDict dict = ParticleDict::read(Dictionary::read(dictPath), materials);
   const bool binary = [&] {
     const fs::path control = caseDir / "system" / "controlDict";
     if (!fs::exists(control)) return true;
@@ -51,24 +63,42 @@ int main(int argc, char* argv[]) try {
     return d.getWord("writeFormat", {"binary", "ascii"}, "binary") == "binary";
   }();
 
+  // Sets in ParticleSystem order (fluid, one porous set per material in constant/porosityProperties order,
+  // boundary), the order readParticles gives back, so a run from 0/ sees the sets as sampled.
   ParticleSystem particles(dict.particleRadius);
   ParticleSet& fluid = particles.add("fluid", SetKind::Fluid);
-  ParticleSet* boundary = nullptr;
-  long long nextId = 0;
+  std::vector<ParticleSet*> porous(materials.size(), nullptr);
+  for (std::size_t m = 0; m < materials.size(); ++m)
+    if (hasRegion(dict, ParticleRegion::Phase::Porous, m)) {
+      porous[m] = &particles.add(materials[m].name, SetKind::Porous);
+      porous[m]->addInt(field::materialId, Restart);
+      porous[m]->addInt(field::fixed, Restart);
+    }
+  ParticleSet* boundary =
+      hasRegion(dict, ParticleRegion::Phase::Boundary) ? &particles.add("boundary", SetKind::Boundary) : nullptr;
+
+  long long nextId = 0; // ids are unique over all particles of the case
   for (std::size_t r = 0; r < dict.regions.size(); ++r) {
     const ParticleRegion& region = dict.regions[r];
     const std::vector<Vec3> points =
         region.shape == ParticleRegion::Shape::Box
             ? sampleBox(region.min, region.max, dict.particleRadius)
             : sampleContainer(region.min, region.max, dict.particleRadius, region.layers, region.open);
-    ParticleSet* target = &fluid;
-    if (region.phase == ParticleRegion::Phase::Boundary) {
-      if (!boundary) boundary = &particles.add("boundary", SetKind::Boundary);
-      target = boundary;
-    }
-    appendRegion(*target, points, region.velocity, static_cast<long long>(r), nextId);
+    ParticleSet* target = region.phase == ParticleRegion::Phase::Fluid    ? &fluid
+                          : region.phase == ParticleRegion::Phase::Porous ? porous[region.materialId]
+                                                                          : boundary;
+    const std::size_t first = appendRegion(*target, points, region.velocity, static_cast<long long>(r), nextId);
     std::ostringstream line;
     line << "region " << region.name << ": " << points.size() << " " << toString(target->kind()) << " particles";
+    if (region.phase == ParticleRegion::Phase::Porous) {
+      auto& materialIds = target->integer(field::materialId);
+      auto& fixed = target->integer(field::fixed);
+      for (std::size_t i = first; i < target->size(); ++i) {
+        materialIds[i] = static_cast<std::int64_t>(region.materialId);
+        fixed[i] = region.fixed ? 1 : 0;
+      }
+      line << " of material " << materials[region.materialId].name << (region.fixed ? ", fixed" : "");
+    }
     log::info(line.str());
   }
   if (fluid.size() == 0) throw InputError(dictPath + ": no fluid particles; add a region with phase fluid");
@@ -76,8 +106,8 @@ int main(int argc, char* argv[]) try {
   fs::create_directories(caseDir);
   TimeWriter::writeAll(caseDir, particles, RunState{}, binary);
   std::ostringstream done;
-  done << "Wrote " << (caseDir / "0").string() << " with " << particles.particleCount()
-       << " particles (radius " << dict.particleRadius << " m) and " << (caseDir / "case.pvd").string() << "\nEnd";
+  done << "Wrote " << (caseDir / "0").string() << " with " << particles.particleCount() << " particles (radius "
+       << dict.particleRadius << " m) and " << (caseDir / "case.pvd").string() << "\nEnd";
   log::info(done.str());
   return 0;
 } catch (const Error& e) {

@@ -42,7 +42,7 @@ Vec3 momentum(const ParticleSet& set) {
 TEST(Integration, LoneParticleFallsExactlyAsSymplecticEuler) {
   // x_n = x_0 + g dt^2 n (n + 1) / 2 (METHOD.md §6.8), all fields finite (§4.3).
   const double dt = 1e-3;
-  Solver solver(fluidBlob({Vec3(0.1, 2.0, 0.3)}), FluidProperties{}, SolverSettings{}, fixedStep(dt), RunState{});
+  Solver solver(fluidBlob({Vec3(0.1, 2.0, 0.3)}), FluidProperties{}, {}, SolverSettings{}, fixedStep(dt), RunState{});
   const Vec3 g(0.0, -9.81, 0.0);
   for (int n = 1; n <= 50; ++n) {
     solver.step(dt);
@@ -63,7 +63,7 @@ TEST(PressureSolve, CompressedBlobExpandsConservingMomentum) {
   fluid.gravity.setZero();
   SolverSettings settings;
   settings.pressure.maxIterations = 500;
-  Solver solver(fluidBlob(points), fluid, settings, fixedStep(1e-3), RunState{});
+  Solver solver(fluidBlob(points), fluid, {}, settings, fixedStep(1e-3), RunState{});
   solver.step(1e-3);
   const ParticleSet& set = solver.particles()[0];
   EXPECT_TRUE(solver.lastStep().pressure.converged);
@@ -91,7 +91,7 @@ protected:
     fluid_.viscosity = 5.0;
     settings_.implicit.tolerance = 1e-10;
     settings_.implicit.maxIterations = 500;
-    solver_ = std::make_unique<Solver>(std::move(ps), fluid_, settings_, fixedStep(1e-3), RunState{});
+    solver_ = std::make_unique<Solver>(std::move(ps), fluid_, std::vector<PorousMaterial>{}, settings_, fixedStep(1e-3), RunState{});
   }
   FluidProperties fluid_;
   SolverSettings settings_;
@@ -118,7 +118,7 @@ TEST(Viscosity, RigidTranslationFeelsNoForce) {
   fluid.gravity.setZero();
   fluid.viscosity = 50.0;
   const Vec3 u(0.3, -0.2, 0.1);
-  Solver solver(fluidBlob(sampleBox(Vec3::Zero(), Vec3::Constant(0.08), kR), u), fluid, SolverSettings{},
+  Solver solver(fluidBlob(sampleBox(Vec3::Zero(), Vec3::Constant(0.08), kR), u), fluid, {}, SolverSettings{},
                 fixedStep(1e-3), RunState{});
   solver.step(1e-3);
   for (const Vec3& v : solver.particles()[0].v()) EXPECT_LT((v - u).norm(), 1e-12);

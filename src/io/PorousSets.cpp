@@ -1,0 +1,173 @@
+#include "io/PorousSets.hpp"
+
+#include "core/Error.hpp"
+#include "physics/FieldNames.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace poro {
+
+namespace {
+
+using FieldInfo = ParticleSet::FieldInfo;
+
+/// The fields a time directory holds (role Output or Restart), sorted by name for comparison.
+std::vector<FieldInfo> writtenFields(const ParticleSet& set) {
+  std::vector<FieldInfo> fields = set.fields();
+  fields.erase(std::remove_if(fields.begin(), fields.end(), [](const FieldInfo& f) { return f.role == Scratch; }),
+               fields.end());
+  std::sort(fields.begin(), fields.end(), [](const FieldInfo& a, const FieldInfo& b) { return a.name < b.name; });
+  return fields;
+}
+
+bool sameFields(const std::vector<FieldInfo>& a, const std::vector<FieldInfo>& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const FieldInfo& x, const FieldInfo& y) {
+    return x.name == y.name && x.type == y.type && x.role == y.role;
+  });
+}
+
+void registerField(ParticleSet& set, const FieldInfo& f) {
+  switch (f.type) {
+  case FieldType::Real:
+    set.addReal(f.name, f.role);
+    break;
+  case FieldType::Vec3:
+    set.addVec3(f.name, f.role);
+    break;
+  case FieldType::Mat3:
+    set.addMat3(f.name, f.role);
+    break;
+  case FieldType::Int:
+    set.addInt(f.name, f.role);
+    break;
+  }
+}
+
+template <class T> void copyAt(const std::vector<T>& from, std::vector<T>& to, std::size_t offset) {
+  std::copy(from.begin(), from.end(), to.begin() + static_cast<std::ptrdiff_t>(offset));
+}
+
+/// Copies field `f` of `from` (all of it) into `to` starting at slot `offset`.
+void appendField(const ParticleSet& from, ParticleSet& to, std::size_t offset, const FieldInfo& f) {
+  switch (f.type) {
+  case FieldType::Real:
+    copyAt(from.real(f.name), to.real(f.name), offset);
+    break;
+  case FieldType::Vec3:
+    copyAt(from.vec3(f.name), to.vec3(f.name), offset);
+    break;
+  case FieldType::Mat3:
+    copyAt(from.mat3(f.name), to.mat3(f.name), offset);
+    break;
+  case FieldType::Int:
+    copyAt(from.integer(f.name), to.integer(f.name), offset);
+    break;
+  }
+}
+
+template <class T> void gather(const std::vector<T>& from, std::vector<T>& to, const std::vector<std::size_t>& slots) {
+  for (std::size_t k = 0; k < slots.size(); ++k) to[k] = from[slots[k]];
+}
+
+/// Copies slots `slots` of field `f` of `from` into slots 0, 1, ... of `to`.
+void gatherField(const ParticleSet& from, ParticleSet& to, const std::vector<std::size_t>& slots, const FieldInfo& f) {
+  switch (f.type) {
+  case FieldType::Real:
+    gather(from.real(f.name), to.real(f.name), slots);
+    break;
+  case FieldType::Vec3:
+    gather(from.vec3(f.name), to.vec3(f.name), slots);
+    break;
+  case FieldType::Mat3:
+    gather(from.mat3(f.name), to.mat3(f.name), slots);
+    break;
+  case FieldType::Int:
+    gather(from.integer(f.name), to.integer(f.name), slots);
+    break;
+  }
+}
+
+std::string materialNames(const std::vector<PorousMaterial>& materials) {
+  std::string names;
+  for (const PorousMaterial& m : materials) names += (names.empty() ? "" : ", ") + m.name;
+  return names;
+}
+
+} // namespace
+
+bool hasPorousSets(const ParticleSystem& particles) {
+  for (std::size_t s = 0; s < particles.size(); ++s)
+    if (particles[s].kind() == SetKind::Porous) return true;
+  return false;
+}
+
+ParticleSet mergePorousSets(const ParticleSystem& particles) {
+  std::vector<const ParticleSet*> sets;
+  for (std::size_t s = 0; s < particles.size(); ++s)
+    if (particles[s].kind() == SetKind::Porous) sets.push_back(&particles[s]);
+
+  ParticleSet merged(kPorousSetName, SetKind::Porous);
+  if (sets.empty()) return merged;
+  const std::vector<FieldInfo> fields = writtenFields(*sets.front());
+  std::size_t total = 0;
+  for (const ParticleSet* set : sets) {
+    const FieldInfo* material = set->info(field::materialId);
+    if (!material || material->type != FieldType::Int || material->role == Scratch)
+      throw std::logic_error("porous set '" + set->name() + "' has no Int field '" + field::materialId +
+                             "' of role Output or Restart; porous.vtp could not say which material its particles are");
+    if (!sameFields(writtenFields(*set), fields))
+      throw std::logic_error("porous sets '" + sets.front()->name() + "' and '" + set->name() +
+                             "' have different output fields; they cannot share porous.vtp");
+    total += set->size();
+  }
+  for (const FieldInfo& f : fields) registerField(merged, f);
+  merged.resize(total);
+  std::size_t offset = 0;
+  for (const ParticleSet* set : sets) {
+    for (const FieldInfo& f : fields) appendField(*set, merged, offset, f);
+    offset += set->size();
+  }
+  return merged;
+}
+
+void splitPorousSet(ParticleSet&& merged, const std::vector<PorousMaterial>& materials, ParticleSystem& into,
+                    const std::filesystem::path& file) {
+  const std::string where = file.string() + ": ";
+  if (materials.empty())
+    throw InputError(where + "porous particles, but the case defines no porous material; create "
+                             "constant/porosityProperties with the materials the particles were sampled with "
+                             "(template: etc/caseDicts/porosityProperties)");
+  const FieldInfo* material = merged.info(field::materialId);
+  if (!material || material->type != FieldType::Int)
+    throw InputError(where + "no Int point array '" + field::materialId +
+                     "', so the material of each porous particle is unknown; write the file with sampleParticles "
+                     "(or add materialId, the index of the material in constant/porosityProperties)");
+
+  // Slots of each material's particles, in file order.
+  const auto& ids = merged.integer(field::id);
+  const auto& materialIds = merged.integer(field::materialId);
+  std::vector<std::vector<std::size_t>> slots(materials.size());
+  for (std::size_t i = 0; i < merged.size(); ++i) {
+    const std::int64_t m = materialIds[i];
+    if (m < 0 || m >= static_cast<std::int64_t>(materials.size()))
+      throw InputError(where + "particle id " + std::to_string(ids[i]) + " has materialId " + std::to_string(m) +
+                       ", expected 0 to " + std::to_string(materials.size() - 1) +
+                       " (the index of its material in constant/porosityProperties, which defines " +
+                       materialNames(materials) + ")");
+    slots[static_cast<std::size_t>(m)].push_back(i);
+  }
+
+  merged.addInt(field::materialId, Restart); // io's own restart field, whatever role the file gave it
+  const std::vector<FieldInfo> fields = merged.fields();
+  for (std::size_t m = 0; m < materials.size(); ++m) {
+    if (slots[m].empty()) continue;
+    ParticleSet& set = into.add(materials[m].name, SetKind::Porous);
+    for (const FieldInfo& f : fields) registerField(set, f);
+    set.resize(slots[m].size());
+    for (const FieldInfo& f : fields) gatherField(merged, set, slots[m], f);
+  }
+}
+
+} // namespace poro

@@ -1,0 +1,36 @@
+#pragma once
+/// Porous particle sets on disk (ARCHITECTURE.md "A case directory"). In memory there is one porous set per
+/// material, named after it; a time directory holds all of them in one file `porous.vtp`, concatenated in
+/// ParticleSystem order, whose Int field `materialId` (physics/FieldNames.hpp) is the index of each
+/// particle's material in constant/porosityProperties.
+
+#include "physics/PorousMaterial.hpp"
+#include "sph/ParticleSystem.hpp"
+
+#include <filesystem>
+#include <vector>
+
+namespace poro {
+
+/// Name of the merged set, its file stem (`porous.vtp`) and its case.pvd part.
+inline constexpr const char* kPorousSetName = "porous";
+
+/// True if `particles` holds at least one set of kind Porous.
+bool hasPorousSets(const ParticleSystem& particles);
+
+/// One set named "porous" (kind Porous) holding every particle of every porous set of `particles`, in
+/// ParticleSystem order and, within a set, in its order. It carries every field of role Output or Restart
+/// with that role; Scratch fields are left out. Throws std::logic_error when the porous sets do not have
+/// the same Output/Restart fields (name, type, role) or lack the Int field materialId.
+ParticleSet mergePorousSets(const ParticleSystem& particles);
+
+/// Splits a set read from `file` (porous.vtp) by its Int field materialId into one set per material, named
+/// materials[id].name, kind Porous, appended to `into` in material order; materials without particles get
+/// no set. Each keeps the file order of its particles and every field of `merged` (Real, Vec3, Mat3, Int)
+/// with the same role; materialId becomes a Restart field. Throws InputError naming `file` when `materials`
+/// is empty (the case has no constant/porosityProperties), when the file has no Int field materialId, or
+/// when a materialId lies outside [0, materials.size()) (naming the first such particle's id).
+void splitPorousSet(ParticleSet&& merged, const std::vector<PorousMaterial>& materials, ParticleSystem& into,
+                    const std::filesystem::path& file);
+
+} // namespace poro

@@ -1,0 +1,122 @@
+#include "physics/PorousDrag.hpp"
+
+#include "core/Parallel.hpp"
+#include "physics/FieldNames.hpp"
+
+#include <algorithm>
+
+namespace poro {
+
+namespace {
+constexpr double kDragFactor = 10.0; // 2(d + 2) for d = 3
+
+/// phi^min_t of the mixture density: keeps the coefficient within 20x of its in-pore value (METHOD.md §6.4).
+double porosityFloor(double phi) { return std::max(0.05 * phi, 0.01); }
+} // namespace
+
+double PorousDrag::coefficient(double mu, double massI, double rhoMix, double massT, double rhoT, double distance2,
+                               double regulariser) {
+  return kDragFactor * mu * (massI / rhoMix) * (massT / rhoT) / (distance2 + regulariser);
+}
+
+bool PorousDrag::enabled(const StepContext& ctx) const {
+  bool fluid = false, drag = false;
+  for (std::size_t a : ctx.dynamicSets) {
+    fluid = fluid || ctx.particles[a].kind() == SetKind::Fluid;
+    drag = drag || (ctx.materials[a] && ctx.materials[a]->dragViscosity > 0.0);
+  }
+  return fluid && drag;
+}
+
+void PorousDrag::prepare(const StepContext& ctx) {
+  ctx_ = &ctx;
+  sides_.clear();
+  std::size_t fluidPart = 0;
+  for (std::size_t p = 0; p < ctx.dynamicSets.size(); ++p)
+    if (ctx.particles[ctx.dynamicSets[p]].kind() == SetKind::Fluid) fluidPart = p;
+  const std::size_t fluidSet = ctx.dynamicSets[fluidPart];
+  const ParticleSet& fluid = ctx.particles[fluidSet];
+  const double h = ctx.kernel.supportRadius();
+  const double regulariser = 0.01 * h * h;
+  const auto& rhoFluid = fluid.real(field::density);
+  const auto& phiLocal = fluid.real(field::localPorosity);
+
+  for (std::size_t p = 0; p < ctx.dynamicSets.size(); ++p) {
+    const std::size_t t = ctx.dynamicSets[p];
+    const PorousMaterial* material = ctx.materials[t];
+    if (!material || material->dragViscosity == 0.0) continue;
+    const ParticleSet& solid = ctx.particles[t];
+    const auto& rhoSolid = solid.real(field::density);
+    const double mu = material->dragViscosity;
+    const double floor = porosityFloor(material->porosity);
+    // K_it with i always the fluid particle, whichever side evaluates it.
+    auto pairK = [&](std::size_t i, std::size_t s, double distance2) {
+      const double rhoMix = rhoFluid[i] * std::max(phiLocal[i], floor);
+      return coefficient(mu, fluid.mass, rhoMix, solid.mass, rhoSolid[s], distance2, regulariser);
+    };
+    for (const bool fluidSide : {true, false}) {
+      Side side{
+          fluidSide ? fluidSet : t, fluidSide ? fluidPart : p, fluidSide ? t : fluidSet, fluidSide ? p : fluidPart, {}};
+      const NeighbourList& list = ctx.search.list(side.self, side.other);
+      const auto& gradients = ctx.gradients.of(side.self, side.other);
+      const auto& xSelf = ctx.particles[side.self].x();
+      const auto& xOther = ctx.particles[side.other].x();
+      side.pairCoefficient.resize(list.totalPairs());
+      parallel::forEach(xSelf.size(), [&](std::size_t a) {
+        std::size_t q = list.offset(a);
+        for (Index bIndex : list.of(a)) {
+          const std::size_t b = static_cast<std::size_t>(bIndex);
+          const double d2 = (xSelf[a] - xOther[b]).squaredNorm();
+          const double k = fluidSide ? pairK(a, b, d2) : pairK(b, a, d2);
+          side.pairCoefficient[q] = k * gradients[q];
+          ++q;
+        }
+      });
+      sides_.push_back(std::move(side));
+    }
+  }
+}
+
+void PorousDrag::addApply(const linalg::BlockVector& u, const linalg::BlockVector& au) const {
+  // (A u)_a -= dt F_a with F_a = sum_b K s (u_ab . x_ab) x_ab from either side (x_ab and u_ab flip together).
+  const double dt = ctx_->dt;
+  for (const Side& side : sides_) {
+    const NeighbourList& list = ctx_->search.list(side.self, side.other);
+    const auto& xa = ctx_->particles[side.self].x();
+    const auto& xb = ctx_->particles[side.other].x();
+    const Vec3* ua = u[side.part].data;
+    const Vec3* ub = u[side.otherPart].data;
+    Vec3* out = au[side.part].data;
+    parallel::forEach(u[side.part].size, [&](std::size_t a) {
+      Vec3 force = Vec3::Zero();
+      std::size_t q = list.offset(a);
+      for (Index bIndex : list.of(a)) {
+        const std::size_t b = static_cast<std::size_t>(bIndex);
+        const Vec3 xab = xa[a] - xb[b];
+        force += (side.pairCoefficient[q++] * (ua[a] - ub[b]).dot(xab)) * xab;
+      }
+      out[a] -= dt * force;
+    });
+  }
+}
+
+void PorousDrag::addDiagonal(const linalg::BlockDiagonal& d) const {
+  const double dt = ctx_->dt;
+  for (const Side& side : sides_) {
+    const NeighbourList& list = ctx_->search.list(side.self, side.other);
+    const auto& xa = ctx_->particles[side.self].x();
+    const auto& xb = ctx_->particles[side.other].x();
+    Mat3* out = d[side.part].data;
+    parallel::forEach(d[side.part].size, [&](std::size_t a) {
+      Mat3 block = Mat3::Zero();
+      std::size_t q = list.offset(a);
+      for (Index bIndex : list.of(a)) {
+        const Vec3 xab = xa[a] - xb[static_cast<std::size_t>(bIndex)];
+        block += side.pairCoefficient[q++] * (xab * xab.transpose());
+      }
+      out[a] -= dt * block;
+    });
+  }
+}
+
+} // namespace poro
