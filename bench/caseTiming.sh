@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Whole-case timing (ARCHITECTURE.md "bench/"): copies a tutorial case to a temporary directory, samples
 # its particles, runs about STEPS time steps from time 0 and prints particle counts, steps, ms/step,
-# million fluid particle-steps per second and poroSph's phase breakdown.
+# million particle-steps per second (fluid and porous particles: the unknowns; walls are not counted) and
+# poroSph's phase breakdown.
 #
 # usage: bench/caseTiming.sh [BUILD_DIR] [CASE] [STEPS] [THREADS]
 #   BUILD_DIR  build tree holding bin/poroSph and bin/sampleParticles   (default: <repo>/build)
@@ -68,12 +69,13 @@ if [[ "${FIXED_STEP:-0}" == 1 ]]; then set_key adjustTimeStep false; fi
 
 "$build/bin/sampleParticles" -case "$case_dir" >"$work/log.sampleParticles" 2>&1 ||
   { cat "$work/log.sampleParticles" >&2; die "sampleParticles failed"; }
-fluid="$(awk '/^region .*: [0-9]+ fluid particles/ { for (i = 1; i <= NF; ++i) if ($(i + 1) == "fluid") n += $i }
-              END { print n + 0 }' "$work/log.sampleParticles")"
+dynamic="$(awk '/^region .*: [0-9]+ (fluid|porous) particles/ {
+                  for (i = 1; i <= NF; ++i) if ($(i + 1) == "fluid" || $(i + 1) == "porous") n += $i }
+                END { print n + 0 }' "$work/log.sampleParticles")"
 total="$(sed -n 's/^Wrote .* with \([0-9][0-9]*\) particles.*/\1/p' "$work/log.sampleParticles" | tail -n 1)"
 
 echo "case:       $case_src"
-echo "particles:  $fluid fluid, $total total (radius $(sed -n 's/^particleRadius:[[:space:]]*\([^#[:space:]]*\).*/\1/p' "$case_dir/system/particleDict") m)"
+echo "particles:  $dynamic fluid and porous, $total total (radius $(sed -n 's/^particleRadius:[[:space:]]*\([^#[:space:]]*\).*/\1/p' "$case_dir/system/particleDict") m)"
 echo "requested:  $steps steps, endTime = $steps x $delta_t = $end_time s"
 
 status=0
@@ -86,7 +88,7 @@ for t in $threads_list; do
     status=1
     continue
   fi
-  awk -v fluid="$fluid" -v threads="$t" '
+  awk -v dynamic="$dynamic" -v threads="$t" '
     /^Time = .*\(step [0-9]+\)/ { s = $0; sub(/.*\(step /, "", s); sub(/\).*/, "", s); steps = s + 0 }
     /^pressure: [0-9]+ sweeps/  { sweeps += $2; nPressure++ }
     /^implicit: [0-9]+ CG/      { cg += $2; nImplicit++ }
@@ -99,7 +101,7 @@ for t in $threads_list; do
       printf "\n== threads %d\n", threads
       printf "steps:      %d in %.3f s (time loop)\n", steps, seconds
       printf "ms/step:    %.2f\n", 1000.0 * seconds / steps
-      printf "throughput: %.3f million fluid particle-steps/s\n", fluid * steps / seconds / 1e6
+      printf "throughput: %.3f million particle-steps/s (fluid and porous)\n", dynamic * steps / seconds / 1e6
       if (nPressure > 0) printf "pressure:   %.1f sweeps/step\n", sweeps / nPressure
       if (nImplicit > 0) printf "implicit:   %.1f CG iterations/step\n", cg / nImplicit
       printf "%s", phases

@@ -29,7 +29,7 @@ std::vector<Vec3> sampleBox(const Vec3& min, const Vec3& max, double particleRad
 
 std::vector<Vec3> sampleContainer(const Vec3& min, const Vec3& max, double particleRadius, int layers,
                                   const FaceFlags& open) {
-  // Per axis: wall layers r, 3r, ... behind each closed face, and the inner lattice between them. Every
+  // Per axis: wall layers r, 3r, ... behind each closed face, and the inner coordinates between them. Every
   // wall is placed from its own face, so the walls sit right even when the inner extent is not a multiple
   // of 2r. A point is a wall point when at least one of its coordinates lies in a wall layer.
   const double spacing = 2.0 * particleRadius;
@@ -42,8 +42,12 @@ std::vector<Vec3> sampleContainer(const Vec3& min, const Vec3& max, double parti
     auto& axis = axes[static_cast<std::size_t>(d)];
     if (!open[static_cast<std::size_t>(2 * d)])
       for (int l = layers - 1; l >= 0; --l) axis.push_back({min[d] - particleRadius - spacing * l, true});
-    const long long n = std::max(0LL, latticeCount(max[d] - min[d], spacing));
-    for (long long k = 0; k < n; ++k) axis.push_back({min[d] + particleRadius + spacing * static_cast<double>(k), false});
+    // Along the faces the wall must leave no seam wider than 2r (fluid leaks through one): the inner extent
+    // is split into ceil(L/2r) equal steps, which is the 2r lattice itself when L is a multiple of 2r.
+    const double length = max[d] - min[d];
+    const long long n = std::max(1LL, static_cast<long long>(std::ceil(length / spacing - 1e-9)));
+    const double step = length / static_cast<double>(n);
+    for (long long k = 0; k < n; ++k) axis.push_back({min[d] + step * (static_cast<double>(k) + 0.5), false});
     if (!open[static_cast<std::size_t>(2 * d + 1)])
       for (int l = 0; l < layers; ++l) axis.push_back({max[d] + particleRadius + spacing * l, true});
   }

@@ -10,8 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
-#include <sstream>
 #include <map>
+#include <sstream>
 
 namespace poro::test {
 namespace {
@@ -59,7 +59,8 @@ std::vector<double> densitiesAt(ParticleSystem& ps, double radius) {
   std::vector<double> rho(fluid.size());
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     double sum = volume * kernel.w0();
-    for (Index j : search.list(0, 0).of(i)) sum += volume * kernel.w(fluid.x()[i] - fluid.x()[static_cast<std::size_t>(j)]);
+    for (Index j : search.list(0, 0).of(i))
+      sum += volume * kernel.w(fluid.x()[i] - fluid.x()[static_cast<std::size_t>(j)]);
     for (Index k : search.list(0, 1).of(i))
       sum += boundary.real(kBoundaryVolumeField)[static_cast<std::size_t>(k)] *
              kernel.w(fluid.x()[i] - boundary.x()[static_cast<std::size_t>(k)]);
@@ -133,8 +134,8 @@ TEST_F(HydrostaticTank, DISABLED_PressureIsHydrostatic) {
   ASSERT_GE(layers.size(), 15u);
   for (const auto& [layer, sums] : layers) {
     if (counts[layer] < 100) continue; // partly filled top layers
-    EXPECT_NEAR(sums.first / sums.second, 1.0, 0.05) << "layer " << layer << " mean pressure "
-                                                      << sums.first / counts[layer] << " Pa";
+    EXPECT_NEAR(sums.first / sums.second, 1.0, 0.05)
+        << "layer " << layer << " mean pressure " << sums.first / counts[layer] << " Pa";
   }
 }
 
@@ -202,7 +203,8 @@ TEST(DamBreak, SurgeSpeedFollowsMartinMoyce) {
   const double speed = (frontAt(2.547) - frontAt(1.219)) / (2.547 - 1.219);
   const double tableSpeed = (2.995 - 1.474) / (2.547 - 1.219);
   EXPECT_NEAR(speed / tableSpeed, 1.0, 0.10) << "surge speed dZ/dT " << speed << ", Martin & Moyce " << tableSpeed;
-  for (const auto& [t, expected] : std::vector<std::pair<double, double>>{{0.832, 1.217}, {1.219, 1.474}, {1.997, 2.292}, {2.547, 2.995}})
+  for (const auto& [t, expected] :
+       std::vector<std::pair<double, double>>{{0.832, 1.217}, {1.219, 1.474}, {1.997, 2.292}, {2.547, 2.995}})
     std::cout << "T = " << t << ": Z/a = " << frontAt(t) << " (Martin & Moyce " << expected << ")\n";
 }
 

@@ -48,5 +48,36 @@ TEST(Restart, StoppedAndRestartedRunMatchesUninterruptedRun) {
   EXPECT_NE(split.read("case.pvd").find("0.05/fluid.vtp"), std::string::npos);
 }
 
+void makeCoarsePorousWall(CaseRunner& runner, const std::string& endTime) {
+  runner.setKey("system/particleDict", "particleRadius", "0.02");
+  runner.replace("system/particleDict", "fixed: true", "fixed: false"); // the solid moves too
+  runner.setKey("system/controlDict", "endTime", endTime);
+  runner.setKey("system/controlDict", "writeInterval", "0.05");
+  runner.replace("system/solverDict", "sortInterval: 500", "sortInterval: 7");
+}
+
+TEST(Restart, PorousRunRestartsBitForBit) {
+  // Fluid and a free porous solid (pressure, drag and buoyancy with its lagged pressures), restarted across
+  // Morton reorderings and on another thread count.
+  CaseRunner straight("porous/porousWall");
+  makeCoarsePorousWall(straight, "0.1");
+  ASSERT_EQ(straight.sample(), 0) << straight.read("log.sampleParticles");
+  ASSERT_EQ(straight.solve("-threads 2"), 0) << straight.read("log.poroSph");
+
+  CaseRunner split("porous/porousWall");
+  makeCoarsePorousWall(split, "0.05");
+  ASSERT_EQ(split.sample(), 0);
+  ASSERT_EQ(split.solve("-threads 2"), 0) << split.read("log.poroSph");
+  split.setKey("system/controlDict", "endTime", "0.1");
+  std::filesystem::remove(split.dir() / "log.poroSph");
+  ASSERT_EQ(split.solve("-threads 1"), 0) << split.read("log.poroSph");
+
+  const ParticleSystem a = straight.particles("0.1", 0.02);
+  const ParticleSystem b = split.particles("0.1", 0.02);
+  expectIdentical(*a.find("fluid"), *b.find("fluid"));
+  expectIdentical(*a.find("porousWall"), *b.find("porousWall"));
+  EXPECT_NE(split.read("case.pvd").find("0.1/porous.vtp"), std::string::npos);
+}
+
 } // namespace
 } // namespace poro::test
