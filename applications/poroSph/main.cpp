@@ -4,6 +4,7 @@
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "core/Parallel.hpp"
+#include "core/StopSignals.hpp"
 #include "io/CaseReader.hpp"
 #include "io/TimeDirectory.hpp"
 
@@ -29,8 +30,9 @@ int main(int argc, char* argv[]) try {
                 simulation.control, simulation.start);
   log::info("Threads: " + std::to_string(parallel::threads()));
   TimeWriter writer(args.caseDir(), simulation.output, simulation.startName);
-  solver.run([&](const Solver& s) { writer.write(s.particles(), s.state()); });
-  return 0;
+  signals::installStopHandlers();
+  const int stoppedBy = solver.run([&](const Solver& s) { writer.write(s.particles(), s.state()); });
+  return stoppedBy ? 1 : 0;
 } catch (const Error& e) {
   log::fatal(e);
   return 1;

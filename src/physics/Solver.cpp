@@ -3,6 +3,7 @@
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "core/Parallel.hpp"
+#include "core/StopSignals.hpp"
 #include "physics/Buoyancy.hpp"
 #include "physics/Densities.hpp"
 #include "physics/FieldNames.hpp"
@@ -244,9 +245,10 @@ bool Solver::isWriteStep(double previousTime) const {
   return after > before;
 }
 
-void Solver::run(const Writer& write) {
+int Solver::run(const Writer& write) {
   const Timer clock;
   const double startTime = state_.time;
+  int stoppedBy = 0;
   log::info("Starting time loop\n");
   while (state_.time < control_.endTime - endSlack()) {
     const double previousTime = state_.time;
@@ -272,9 +274,19 @@ void Solver::run(const Writer& write) {
                    std::to_string(settings_.pressure.maxIterations) + " with density error " +
                    std::to_string(r.pressure.meanError) + " %; consider a smaller deltaT or maxCourant");
     const bool last = !(state_.time < control_.endTime - endSlack());
-    if (isWriteStep(previousTime) || last) {
+    const int signal = signals::stopRequested();
+    if (isWriteStep(previousTime) || last || signal) {
       ScopedPhase phase(phases_, "output");
       write(*this);
+    }
+    if (signal && !last) {
+      std::ostringstream msg;
+      msg << std::setprecision(10) << signals::name(signal) << " received: stopped after step " << state_.step
+          << " at time " << state_.time << ", which is written. To continue, run poroSph again with startFrom "
+          << "latestTime in system/controlDict.";
+      log::warning(msg.str());
+      stoppedBy = signal;
+      break;
     }
   }
   std::ostringstream summary;
@@ -285,7 +297,8 @@ void Solver::run(const Writer& write) {
             << std::setprecision(3) << seconds << " s  " << std::setw(5) << std::setprecision(1)
             << (total > 0 ? 100.0 * seconds / total : 0.0) << " %\n";
   log::info(summary.str());
-  log::info("End\n");
+  if (!stoppedBy) log::info("End\n");
+  return stoppedBy;
 }
 
 } // namespace poro

@@ -43,8 +43,10 @@ public:
 
   /// Called at each write time and at the end; receives the solver to read particles and state from.
   using Writer = std::function<void(const Solver&)>;
-  /// Advances to endTime, logging progress per step and calling `write` at every write time.
-  void run(const Writer& write);
+  /// Advances to endTime, logging progress per step and calling `write` at every write time. SIGINT or
+  /// SIGTERM (core/StopSignals.hpp) end the run after the current step, which is written; returns that
+  /// signal, or 0 when endTime was reached.
+  int run(const Writer& write);
   /// One time step of size `deltaT` (METHOD.md §5).
   void step(double deltaT);
   /// Steps 1-4 of METHOD.md §5 at the current positions (neighbour search, densities, alpha, saturation,

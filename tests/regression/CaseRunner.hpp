@@ -8,9 +8,11 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -73,6 +75,18 @@ public:
                                 (dir_ / ("log." + name)).string() + "' 2>&1";
     const int status = std::system(command.c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  /// Starts the solver on the case in the background (log in log.poroSph); returns its process id.
+  pid_t startSolver(const std::string& threads) const {
+    const std::string log = (dir_ / "log.poroSph").string();
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+      std::FILE* out = std::freopen(log.c_str(), "w", stdout);
+      if (!out || ::dup2(::fileno(stdout), 2) < 0) std::_Exit(127);
+      ::execl(POROSPH_SOLVER, POROSPH_SOLVER, "-case", dir_.c_str(), "-threads", threads.c_str(), nullptr);
+      std::_Exit(127);
+    }
+    return pid;
   }
   int sample() const { return run(POROSPH_SAMPLER); }
   int solve(const std::string& arguments = "-threads 2") const { return run(POROSPH_SOLVER, arguments); }

@@ -3,6 +3,8 @@
 
 #include "CaseRunner.hpp"
 
+#include <csignal>
+
 namespace poro::test {
 namespace {
 
@@ -46,6 +48,39 @@ TEST(Restart, StoppedAndRestartedRunMatchesUninterruptedRun) {
   expectIdentical(*a.find("fluid"), *b.find("fluid"));
   EXPECT_NE(split.read("case.pvd").find("0.1/fluid.vtp"), std::string::npos);
   EXPECT_NE(split.read("case.pvd").find("0.05/fluid.vtp"), std::string::npos);
+}
+
+TEST(Restart, SigtermWritesTheCurrentStepAndTheRunResumesBitForBit) {
+  // SIGTERM ends the run after the current step with a written time directory, a resume hint and exit code
+  // 1; startFrom latestTime then reaches the same final state as an uninterrupted run (one thread).
+  CaseRunner straight("fluid/damBreak");
+  makeSmallDamBreak(straight, "0.1");
+  ASSERT_EQ(straight.sample(), 0);
+  ASSERT_EQ(straight.solve("-threads 1"), 0) << straight.read("log.poroSph");
+
+  CaseRunner killed("fluid/damBreak");
+  makeSmallDamBreak(killed, "0.1");
+  ASSERT_EQ(killed.sample(), 0);
+  const pid_t pid = killed.startSolver("1");
+  ASSERT_GT(pid, 0);
+  // Signal once the run is under way (step 20 of about 100), long before it ends.
+  for (int wait = 0; wait < 6000 && killed.read("log.poroSph").find("(step 20)") == std::string::npos; ++wait)
+    ::usleep(10000);
+  ASSERT_EQ(::kill(pid, SIGTERM), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  const std::string log = killed.read("log.poroSph");
+  ASSERT_TRUE(WIFEXITED(status)) << log;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << log;
+  EXPECT_NE(log.find("SIGTERM received: stopped after step"), std::string::npos) << log;
+  EXPECT_NE(log.find("startFrom latestTime"), std::string::npos);
+  const auto times = listTimeDirectories(killed.dir());
+  ASSERT_GE(times.size(), 2u);
+  ASSERT_LT(times.back().time, 0.1 - 1e-9) << "the run ended before the signal arrived";
+
+  std::filesystem::remove(killed.dir() / "log.poroSph");
+  ASSERT_EQ(killed.solve("-threads 1"), 0) << killed.read("log.poroSph");
+  expectIdentical(*straight.particles("0.1", 0.005).find("fluid"), *killed.particles("0.1", 0.005).find("fluid"));
 }
 
 void makeCoarsePorousWall(CaseRunner& runner, const std::string& endTime) {
