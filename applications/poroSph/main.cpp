@@ -6,8 +6,10 @@
 #include "core/Parallel.hpp"
 #include "core/StopSignals.hpp"
 #include "io/CaseReader.hpp"
+#include "io/ControlDictWatcher.hpp"
 #include "io/TimeDirectory.hpp"
 
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 
@@ -30,9 +32,26 @@ int main(int argc, char* argv[]) try {
                 simulation.control, simulation.start);
   log::info("Threads: " + std::to_string(parallel::threads()));
   TimeWriter writer(args.caseDir(), simulation.output, simulation.startName);
+  if (const char* step = std::getenv("POROSPH_INJECT_NAN_STEP")) { // tests the health checks end to end
+    solver.injectNaN(std::atoll(step));
+    log::warning(std::string("POROSPH_INJECT_NAN_STEP: one particle's velocity becomes NaN in step ") + step);
+  }
+  ControlDictWatcher watcher(args.caseDir());
+  ControlSettings current{simulation.control, simulation.output};
+  const auto rereadControlDict = [&](Solver& s) {
+    if (!current.control.runTimeModifiable) return;
+    auto changed = watcher.poll();
+    if (!changed) return;
+    const std::string changes = describeChanges(current, *changed);
+    if (!changes.empty()) log::info("system/controlDict changed (runTimeModifiable):\n" + changes);
+    current = *changed;
+    s.setTimeControl(current.control);
+    writer.setSettings(current.output);
+  };
   signals::installStopHandlers();
-  const int stoppedBy = solver.run([&](const Solver& s) { writer.write(s.particles(), s.state()); });
-  return stoppedBy ? 1 : 0;
+  const RunOutcome outcome =
+      solver.run([&](const Solver& s) { writer.write(s.particles(), s.state()); }, rereadControlDict);
+  return outcome.end == RunOutcome::End::Signal ? 1 : 0;
 } catch (const Error& e) {
   log::fatal(e);
   return 1;

@@ -2,6 +2,7 @@
 
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
+#include "io/ControlDictWatcher.hpp"
 #include "io/TimeDirectory.hpp"
 
 #include <cmath>
@@ -23,11 +24,7 @@ std::vector<PorousMaterial> readPorousMaterials(const fs::path& caseDir) {
 
 SimulationCase readCase(const fs::path& caseDir, int threads) {
   if (!fs::is_directory(caseDir)) throw InputError(caseDir.string() + ": case directory not found");
-  const Dictionary controlDict = Dictionary::read((caseDir / "system" / "controlDict").string());
-  TimeControl control = TimeControl::read(controlDict);
-  const OutputSettings output = OutputSettings::read(controlDict);
-  controlDict.markKnown("runTimeModifiable"); // OpenFOAM habit; re-reading while running is not offered yet
-  controlDict.checkUnknownKeys();
+  const auto [control, output] = readControlDict(caseDir);
 
   const fs::path solverDictPath = caseDir / "system" / "solverDict";
   SolverSettings solver =

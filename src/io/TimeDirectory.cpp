@@ -95,7 +95,12 @@ void writeDirectoryAtomically(const fs::path& caseDir, const std::string& name, 
   fs::remove_all(temporary, ec);
   fs::create_directories(temporary / "uniform", ec);
   if (ec) throw OutputError(temporary.string() + ": cannot create directory: " + ec.message());
-  fill(temporary);
+  try {
+    fill(temporary);
+  } catch (...) { // a full disk: give the space of the partial directory back; earlier times stay as they are
+    fs::remove_all(temporary, ec);
+    throw;
+  }
   renameAtomically(temporary, target);
 }
 

@@ -46,6 +46,8 @@ public:
   /// Writes `<t>/` for the dynamic sets (fluid.vtp, porous.vtp) and uniform/time, atomically, then case.pvd
   /// (one part per file: "fluid", "porous") and purgeWrite.
   void write(const ParticleSystem& particles, const RunState& state);
+  /// New writeFormat / purgeWrite from a re-read system/controlDict; the next write uses them.
+  void setSettings(const OutputSettings& settings) { settings_ = settings; }
 
   /// Writes a complete time directory including boundary sets (sampleParticles writes 0/ with this).
   static void writeAll(const std::filesystem::path& caseDir, const ParticleSystem& particles, const RunState& state,

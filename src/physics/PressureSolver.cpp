@@ -259,4 +259,19 @@ PressureStats PressureSolver::solve(const StepContext& ctx) const {
   return stats;
 }
 
+std::pair<std::size_t, std::size_t> PressureSolver::mostCompressed(const ParticleSystem& particles,
+                                                                   const std::vector<std::size_t>& sets) {
+  std::pair<std::size_t, std::size_t> worst{sets.empty() ? 0 : sets.front(), 0};
+  double largest = -1.0;
+  for (std::size_t s : sets) {
+    const auto& residual = particles[s].real(kResidual);
+    for (std::size_t i = 0; i < residual.size(); ++i)
+      if (residual[i] > largest) {
+        largest = residual[i];
+        worst = {s, i};
+      }
+  }
+  return worst;
+}
+
 } // namespace poro

@@ -6,6 +6,9 @@
 #include "physics/SolverSettings.hpp"
 #include "physics/StepContext.hpp"
 
+#include <utility>
+#include <vector>
+
 namespace poro {
 
 struct PressureStats {
@@ -27,6 +30,10 @@ public:
 
   /// Solves for pi, then v <- v* + dt a^p for every dynamic set. Needs predictDensities first.
   PressureStats solve(const StepContext& ctx) const;
+
+  /// The particle left most compressed by the last solve (set, index), for messages when it did not converge.
+  static std::pair<std::size_t, std::size_t> mostCompressed(const ParticleSystem& particles,
+                                                            const std::vector<std::size_t>& sets);
 
   /// (A pi)_a of the current pi for every particle, by dynamic set (tests probe the operator with it).
   std::vector<std::vector<double>> applyOperator(const StepContext& ctx) const;

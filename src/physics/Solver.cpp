@@ -8,6 +8,7 @@
 #include "physics/Densities.hpp"
 #include "physics/FieldNames.hpp"
 #include "physics/FluidViscosity.hpp"
+#include "physics/NumericalHealth.hpp"
 #include "physics/PorousDrag.hpp"
 #include "physics/TimeStepSize.hpp"
 #include "physics/VolumeFactors.hpp"
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace poro {
@@ -87,6 +89,14 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
   }
   if (fluidSets > 1) throw InputError("more than one fluid particle set; PoroSPH simulates one fluid");
   if (state_.nextDeltaT <= 0.0) state_.nextDeltaT = control_.deltaT;
+  domain_ = settings_.health.domain ? settings_.health.domain : wallDomain(particles_, boundarySets_);
+}
+
+void Solver::setTimeControl(const TimeControl& control) {
+  control_ = control;
+  state_.nextDeltaT = control_.adjustTimeStep
+                          ? std::clamp(state_.nextDeltaT, control_.minDeltaT, control_.maxDeltaT)
+                          : control_.deltaT;
 }
 
 void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
@@ -145,15 +155,13 @@ void Solver::step(double deltaT) {
   {
     ScopedPhase phase(phases_, "implicit");
     report_.implicit = implicit_.solve(ctx);
-    if (!report_.implicit.converged)
-      log::warning(
-          "implicit solve reached implicit.maxIterations = " + std::to_string(settings_.implicit.maxIterations) +
-          " with relative residual " + std::to_string(report_.implicit.relativeResidual));
   }
   {
     ScopedPhase phase(phases_, "pressure");
     pressure_.predictDensities(ctx);
     report_.pressure = pressure_.solve(ctx);
+    if (state_.step + 1 == injectNaNStep_ && !dynamicSets_.empty() && particles_[dynamicSets_.front()].size() > 0)
+      particles_[dynamicSets_.front()].v()[0] = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
   }
   {
     ScopedPhase phase(phases_, "integrate");
@@ -166,7 +174,6 @@ void Solver::step(double deltaT) {
         if (!(fixed && fixed[i])) x[i] += deltaT * v[i];
       });
     }
-    checkFinite();
     state_.time += deltaT;
     ++state_.step;
     report_.deltaT = deltaT;
@@ -201,24 +208,6 @@ double Solver::maxSpeed() const {
   return result;
 }
 
-void Solver::checkFinite() const {
-  for (std::size_t a : dynamicSets_) {
-    const ParticleSet& set = particles_[a];
-    const auto& x = set.x();
-    const auto& v = set.v();
-    const std::size_t bad = parallel::sum<std::size_t>(
-        set.size(), [&](std::size_t i) -> std::size_t { return !(x[i].allFinite() && v[i].allFinite()); });
-    if (bad == 0) continue;
-    std::size_t first = 0;
-    while (first < set.size() && x[first].allFinite() && v[first].allFinite()) ++first;
-    std::ostringstream msg;
-    msg << "step " << state_.step + 1 << " (time " << state_.time << " s): " << bad << " " << set.name()
-        << " particle(s) have non-finite position or velocity, first id " << set.integer(field::id)[first]
-        << "; reduce deltaT or maxCourant in system/controlDict";
-    throw NumericalError(msg.str());
-  }
-}
-
 double Solver::stepSizeFor(double deltaT) const {
   // Adjustable steps land exactly on write times and endTime (OpenFOAM's adjustTimeStep habit).
   if (!control_.adjustTimeStep) return deltaT;
@@ -245,47 +234,171 @@ bool Solver::isWriteStep(double previousTime) const {
   return after > before;
 }
 
-int Solver::run(const Writer& write) {
+void Solver::logProgress(double elapsed, double startTime) const {
+  const StepReport& r = report_;
+  std::ostringstream out;
+  out << std::setprecision(6) << "Time = " << state_.time << "  (step " << state_.step << ")\n"
+      << "deltaT = " << r.deltaT << "  max|v| = " << r.maxSpeed << " m/s  max fluid density = " << r.maxFluidDensity
+      << " rho0";
+  if (r.maxPoreFluidDensity > 0.0) out << " (in pores " << r.maxPoreFluidDensity << " rho0)";
+  out << "\n"
+      << "pressure: " << r.pressure.iterations << " sweeps, density error " << r.pressure.meanError << " % (max "
+      << r.pressure.maxError << " %)" << (r.pressure.converged ? "" : "  NOT CONVERGED") << '\n'
+      << "implicit: " << r.implicit.iterations << " CG iterations, residual " << r.implicit.relativeResidual
+      << (r.implicit.converged ? "" : "  NOT CONVERGED") << '\n';
+  const double done = (state_.time - startTime) / (control_.endTime - startTime);
+  out << "ExecutionTime = " << std::setprecision(4) << elapsed << " s  ClockTime = " << std::llround(elapsed)
+      << " s  ETA = " << formatDuration(done > 0 ? elapsed * (1.0 - done) / done : 0.0) << '\n';
+  log::info(out.str());
+}
+
+void Solver::writeState(const Writer& write) {
+  ScopedPhase phase(phases_, "output");
+  write(*this);
+  lastWrittenStep_ = state_.step;
+}
+
+void Solver::stopAfterWriting(const Writer& write, const std::string& message) {
+  std::ostringstream out;
+  out << message << "\nThe state at time " << std::setprecision(10) << state_.time << " (step " << state_.step
+      << ") is " << (lastWrittenStep_ == state_.step ? "already on disk" : "written") << " as a time directory.";
+  if (lastWrittenStep_ != state_.step) writeState(write);
+  throw NumericalError(out.str());
+}
+
+std::string Solver::whatToChange() const {
+  std::ostringstream out;
+  out << std::setprecision(6);
+  if (control_.adjustTimeStep)
+    out << "reduce maxCourant (now " << control_.maxCourant << ") or maxDeltaT (now " << control_.maxDeltaT << " s)";
+  else
+    out << "reduce deltaT (now " << control_.deltaT << " s)";
+  out << " in system/controlDict";
+  return out.str();
+}
+
+void Solver::checkHealth(const Writer& write) {
+  const HealthSettings& health = settings_.health;
+  const auto notFinite = findNonFinite(particles_, dynamicSets_);
+  if (!notFinite.empty()) {
+    std::ostringstream msg;
+    msg << std::setprecision(10) << "step " << state_.step << " (time " << state_.time << " s, deltaT "
+        << report_.deltaT << " s): NaN or infinite position or velocity in "
+        << describe(particles_, notFinite,
+                    [&](std::size_t s, std::size_t i) {
+                      const auto p = snapshot_.positionOf(s, particles_[s].integer(field::id)[i]);
+                      return p ? *p : particles_[s].x()[i];
+                    })
+        << " (positions at the start of the step)";
+    if (health.nonFinite == HealthAction::Remove) {
+      removeParticles(particles_, notFinite);
+      log::warning(msg.str() + "; removed (health.nonFinite remove in system/solverDict). If this recurs, " +
+                   whatToChange() + ".");
+    } else {
+      snapshot_.restore(particles_, state_);
+      msg << ". The step is undone. To continue: " << whatToChange()
+          << ", then run again with startFrom latestTime; or set health.nonFinite: remove in system/solverDict.";
+      stopAfterWriting(write, msg.str());
+    }
+  }
+  if (domain_) {
+    const auto outside = findOutside(particles_, dynamicSets_, *domain_);
+    const std::size_t n = count(outside);
+    if (n > 0 && (health.leavingDomain != HealthAction::Warn || n > outsideReported_)) {
+      const Vec3& lo = domain_->min;
+      const Vec3& hi = domain_->max;
+      std::ostringstream msg;
+      msg << std::setprecision(6) << "step " << state_.step << " (time " << state_.time << " s): "
+          << describe(particles_, outside, [&](std::size_t s, std::size_t i) { return particles_[s].x()[i]; })
+          << " left the domain (" << lo.x() << ", " << lo.y() << ", " << lo.z() << ") - (" << hi.x() << ", " << hi.y()
+          << ", " << hi.z() << ")" << (settings_.health.domain ? "" : ", the walls' bounding box grown by its longest side")
+          << ". Particles escape through gaps in the walls wider than a particle diameter or are thrown out by a "
+             "pressure spike ("
+          << whatToChange() << "); health.domain in system/solverDict sets the domain";
+      switch (health.leavingDomain) {
+      case HealthAction::Warn:
+        outsideReported_ = n;
+        log::warning(msg.str() + " (health.leavingDomain warn: they stay in the run).");
+        break;
+      case HealthAction::Remove:
+        removeParticles(particles_, outside);
+        log::warning(msg.str() + " (health.leavingDomain remove: they are deleted).");
+        break;
+      case HealthAction::Stop: stopAfterWriting(write, msg.str() + " (health.leavingDomain stop)."); break;
+      }
+    }
+  }
+  checkIterations(write);
+}
+
+void Solver::checkIterations(const Writer& write) {
+  const HealthSettings& health = settings_.health;
+  if (!report_.pressure.converged) {
+    const auto [s, i] = PressureSolver::mostCompressed(particles_, dynamicSets_);
+    const ParticleSet& set = particles_[s];
+    const Vec3 p = set.x()[i];
+    std::ostringstream msg;
+    msg << std::setprecision(6) << "step " << state_.step << " (time " << state_.time
+        << " s): the pressure solve reached pressure.maxIterations = " << settings_.pressure.maxIterations
+        << " with mean density error " << report_.pressure.meanError << " % (target "
+        << settings_.pressure.maxDensityError << " %); most compressed: " << set.name() << " particle id "
+        << set.integer(field::id)[i] << " at (" << p.x() << ", " << p.y() << ", " << p.z() << "), "
+        << report_.pressure.maxError << " %. " << whatToChange()
+        << ", or raise pressure.maxIterations in system/solverDict";
+    if (health.pressureIterations == HealthAction::Stop)
+      stopAfterWriting(write, msg.str() + " (health.pressureIterations stop).");
+    log::warning(msg.str() + ".");
+  }
+  if (!report_.implicit.converged) {
+    std::ostringstream msg;
+    msg << std::setprecision(6) << "step " << state_.step << " (time " << state_.time
+        << " s): the implicit solve (viscosity, drag, buoyancy) reached implicit.maxIterations = "
+        << settings_.implicit.maxIterations << " with relative residual " << report_.implicit.relativeResidual
+        << " (tolerance " << settings_.implicit.tolerance << "). " << whatToChange()
+        << ", or raise implicit.maxIterations in system/solverDict";
+    if (health.implicitIterations == HealthAction::Stop)
+      stopAfterWriting(write, msg.str() + " (health.implicitIterations stop).");
+    log::warning(msg.str() + ".");
+  }
+}
+
+RunOutcome Solver::run(const Writer& write, const Monitor& afterStep) {
+  using StopAt = TimeControl::StopAt;
   const Timer clock;
   const double startTime = state_.time;
-  int stoppedBy = 0;
+  lastWrittenStep_ = state_.step; // the start time directory is on disk
+  RunOutcome outcome;
   log::info("Starting time loop\n");
   while (state_.time < control_.endTime - endSlack()) {
     const double previousTime = state_.time;
     const double dt = stepSizeFor(state_.nextDeltaT);
+    snapshot_.take(particles_, dynamicSets_, state_);
     step(dt);
-    const StepReport& r = report_;
-    std::ostringstream out;
-    out << std::setprecision(6) << "Time = " << state_.time << "  (step " << state_.step << ")\n"
-        << "deltaT = " << r.deltaT << "  max|v| = " << r.maxSpeed << " m/s  max fluid density = " << r.maxFluidDensity
-        << " rho0";
-    if (r.maxPoreFluidDensity > 0.0) out << " (in pores " << r.maxPoreFluidDensity << " rho0)";
-    out << "\n"
-        << "pressure: " << r.pressure.iterations << " sweeps, density error " << r.pressure.meanError << " % (max "
-        << r.pressure.maxError << " %)" << (r.pressure.converged ? "" : "  NOT CONVERGED") << '\n'
-        << "implicit: " << r.implicit.iterations << " CG iterations, residual " << r.implicit.relativeResidual << '\n';
-    const double elapsed = clock.seconds();
-    const double done = (state_.time - startTime) / (control_.endTime - startTime);
-    out << "ExecutionTime = " << std::setprecision(4) << elapsed << " s  ClockTime = " << std::llround(elapsed)
-        << " s  ETA = " << formatDuration(done > 0 ? elapsed * (1.0 - done) / done : 0.0) << '\n';
-    log::info(out.str());
-    if (!r.pressure.converged)
-      log::warning("pressure solve reached pressure.maxIterations = " +
-                   std::to_string(settings_.pressure.maxIterations) + " with density error " +
-                   std::to_string(r.pressure.meanError) + " %; consider a smaller deltaT or maxCourant");
+    logProgress(clock.seconds(), startTime);
+    checkHealth(write);
+    if (afterStep) afterStep(*this);
     const bool last = !(state_.time < control_.endTime - endSlack());
     const int signal = signals::stopRequested();
-    if (isWriteStep(previousTime) || last || signal) {
-      ScopedPhase phase(phases_, "output");
-      write(*this);
-    }
-    if (signal && !last) {
-      std::ostringstream msg;
-      msg << std::setprecision(10) << signals::name(signal) << " received: stopped after step " << state_.step
-          << " at time " << state_.time << ", which is written. To continue, run poroSph again with startFrom "
-          << "latestTime in system/controlDict.";
+    const bool writeTime = isWriteStep(previousTime);
+    const StopAt stopAt = control_.stopAt;
+    const bool skipWrite = stopAt == StopAt::NoWriteNow && !signal;
+    if ((writeTime || last || signal || stopAt == StopAt::WriteNow) && !skipWrite) writeState(write);
+    if (last) break;
+    std::ostringstream msg;
+    msg << std::setprecision(10);
+    if (signal) {
+      msg << signals::name(signal) << " received: stopped after step " << state_.step << " at time " << state_.time
+          << ", which is written. To continue, run poroSph again with startFrom latestTime in system/controlDict.";
       log::warning(msg.str());
-      stoppedBy = signal;
+      outcome = {RunOutcome::End::Signal, signal};
+      break;
+    }
+    if (stopAt == StopAt::WriteNow || stopAt == StopAt::NoWriteNow || (stopAt == StopAt::NextWrite && writeTime)) {
+      msg << "stopAt in system/controlDict: stopped after step " << state_.step << " at time " << state_.time
+          << (lastWrittenStep_ == state_.step ? ", which is written" : ", which is not written")
+          << ". To continue, set stopAt: endTime and startFrom: latestTime and run poroSph again.";
+      log::info(msg.str());
+      outcome.end = RunOutcome::End::StopAt;
       break;
     }
   }
@@ -297,8 +410,8 @@ int Solver::run(const Writer& write) {
             << std::setprecision(3) << seconds << " s  " << std::setw(5) << std::setprecision(1)
             << (total > 0 ? 100.0 * seconds / total : 0.0) << " %\n";
   log::info(summary.str());
-  if (!stoppedBy) log::info("End\n");
-  return stoppedBy;
+  if (outcome.end != RunOutcome::End::Signal) log::info("End\n");
+  return outcome;
 }
 
 } // namespace poro

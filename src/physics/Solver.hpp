@@ -8,21 +8,17 @@
 #include "physics/ImplicitSolver.hpp"
 #include "physics/PorousMaterial.hpp"
 #include "physics/PressureSolver.hpp"
+#include "physics/RunState.hpp"
 #include "physics/SolverSettings.hpp"
+#include "physics/StateSnapshot.hpp"
 #include "physics/StepContext.hpp"
 #include "physics/TimeControl.hpp"
 
 #include <functional>
 #include <memory>
+#include <optional>
 
 namespace poro {
-
-/// Where a run stands: what uniform/time stores (METHOD.md §7).
-struct RunState {
-  double time = 0.0;
-  long long step = 0;
-  double nextDeltaT = 0.0; ///< the step size of the coming step [s]
-};
 
 /// What the last step did, for the progress log and postProcessing.
 struct StepReport {
@@ -34,6 +30,13 @@ struct StepReport {
   double maxPoreFluidDensity = 0.0; ///< the same over fluid particles with porous neighbours
 };
 
+/// Why run() returned.
+struct RunOutcome {
+  enum class End { EndTime, StopAt, Signal };
+  End end = End::EndTime;
+  int signal = 0; ///< with End::Signal: SIGINT or SIGTERM
+};
+
 class Solver {
 public:
   /// Takes the particles of a case (loaded from 0/ or a restart time directory) and validated settings.
@@ -43,10 +46,13 @@ public:
 
   /// Called at each write time and at the end; receives the solver to read particles and state from.
   using Writer = std::function<void(const Solver&)>;
+  /// Called after each step, before the write decision; may change the time control (runTimeModifiable).
+  using Monitor = std::function<void(Solver&)>;
   /// Advances to endTime, logging progress per step and calling `write` at every write time. SIGINT or
-  /// SIGTERM (core/StopSignals.hpp) end the run after the current step, which is written; returns that
-  /// signal, or 0 when endTime was reached.
-  int run(const Writer& write);
+  /// SIGTERM (core/StopSignals.hpp) and stopAt end the run after the current step. After each step the
+  /// health checks of solverDict run; a failed check with policy stop writes the last good state and throws
+  /// NumericalError naming the particles, where they are and what to change.
+  RunOutcome run(const Writer& write, const Monitor& afterStep = {});
   /// One time step of size `deltaT` (METHOD.md §5).
   void step(double deltaT);
   /// Steps 1-4 of METHOD.md §5 at the current positions (neighbour search, densities, alpha, saturation,
@@ -62,14 +68,21 @@ public:
   const PhaseTimes& phaseTimes() const { return phases_; }
   const TimeControl& timeControl() const { return control_; }
   /// Replaces the time settings while running (runTimeModifiable); the next step uses them.
-  void setTimeControl(const TimeControl& control) { control_ = control; }
+  void setTimeControl(const TimeControl& control);
+  /// Tests the health checks end to end: in step `step` one particle's velocity becomes NaN.
+  void injectNaN(long long step) { injectNaNStep_ = step; }
 
 private:
   StepContext context(double deltaT);
   void searchNeighbours();
   double maxSpeed() const;
   void measureFluidDensity();
-  void checkFinite() const;
+  void logProgress(double elapsed, double startTime) const;
+  void checkHealth(const Writer& write);
+  void checkIterations(const Writer& write);
+  void writeState(const Writer& write);
+  [[noreturn]] void stopAfterWriting(const Writer& write, const std::string& message);
+  std::string whatToChange() const;
   double stepSizeFor(double deltaT) const;
   bool isWriteStep(double previousTime) const;
   double endSlack() const;
@@ -91,6 +104,11 @@ private:
   PressureSolver pressure_;
   StepReport report_;
   PhaseTimes phases_;
+  StateSnapshot snapshot_;         ///< before the current step: undoes a step that ends in NaN
+  std::optional<Domain> domain_;   ///< particles outside it fail the leaving-domain check
+  std::size_t outsideReported_ = 0; ///< particles outside the domain already warned about (policy warn)
+  long long lastWrittenStep_ = -1;
+  long long injectNaNStep_ = -1;
 };
 
 } // namespace poro

@@ -2,7 +2,21 @@
 
 #include "core/Dictionary.hpp"
 
+#include <string>
+#include <vector>
+
 namespace poro {
+
+namespace {
+
+HealthAction readAction(const Dictionary& dict, const std::string& key, const std::vector<std::string>& choices,
+                        HealthAction fallback) {
+  const char* names[] = {"warn", "remove", "stop"};
+  const std::string word = dict.getWord(key, choices, names[static_cast<int>(fallback)]);
+  return word == "warn" ? HealthAction::Warn : word == "remove" ? HealthAction::Remove : HealthAction::Stop;
+}
+
+} // namespace
 
 SolverSettings SolverSettings::read(const Dictionary& dict) {
   SolverSettings s;
@@ -28,6 +42,20 @@ SolverSettings SolverSettings::read(const Dictionary& dict) {
   if (auto n = dict.optionalSubDict("neighbourSearch")) {
     s.sortInterval = static_cast<int>(n->getInt("sortInterval", s.sortInterval, Range::closed(0, 1e9)));
     n->checkUnknownKeys();
+  }
+  if (auto h = dict.optionalSubDict("health")) {
+    auto& hs = s.health;
+    hs.nonFinite = readAction(*h, "nonFinite", {"stop", "remove"}, hs.nonFinite);
+    hs.leavingDomain = readAction(*h, "leavingDomain", {"warn", "remove", "stop"}, hs.leavingDomain);
+    hs.pressureIterations = readAction(*h, "pressureIterations", {"warn", "stop"}, hs.pressureIterations);
+    hs.implicitIterations = readAction(*h, "implicitIterations", {"warn", "stop"}, hs.implicitIterations);
+    if (auto d = h->optionalSubDict("domain")) {
+      Domain domain{d->getVec3("min"), d->getVec3("max")};
+      if (!(domain.max.array() > domain.min.array()).all()) d->fail("max", "expected max > min in every component");
+      hs.domain = domain;
+      d->checkUnknownKeys();
+    }
+    h->checkUnknownKeys();
   }
   s.threads = static_cast<int>(dict.getInt("threads", s.threads, Range::closed(0, 4096)));
   dict.checkUnknownKeys();

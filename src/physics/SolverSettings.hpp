@@ -1,5 +1,10 @@
 #pragma once
-/// system/solverDict (METHOD.md §9): pressure solve, implicit solve, neighbour search, threads.
+/// system/solverDict (METHOD.md §9): pressure solve, implicit solve, neighbour search, threads, and what to do
+/// when the numerics go wrong (health).
+
+#include "core/Types.hpp"
+
+#include <optional>
 
 namespace poro {
 class Dictionary;
@@ -18,9 +23,29 @@ struct ImplicitSettings {
   bool preconditioner = true; ///< blockJacobi (true) or none
 };
 
+/// What a failed health check does: warn and go on, remove the particles concerned (with a warning), or stop
+/// the run after writing the last good state.
+enum class HealthAction { Warn, Remove, Stop };
+
+/// Box-shaped region particles may not leave.
+struct Domain {
+  Vec3 min = Vec3::Zero(), max = Vec3::Zero();
+  bool contains(const Vec3& p) const { return (p.array() >= min.array()).all() && (p.array() <= max.array()).all(); }
+};
+
+struct HealthSettings {
+  HealthAction nonFinite = HealthAction::Stop;          ///< NaN/inf position or velocity: stop | remove
+  HealthAction leavingDomain = HealthAction::Remove;    ///< outside `domain`: warn | remove | stop
+  HealthAction pressureIterations = HealthAction::Warn; ///< pressure.maxIterations reached: warn | stop
+  HealthAction implicitIterations = HealthAction::Warn; ///< implicit.maxIterations reached: warn | stop
+  /// Absent: the walls' bounding box grown by its longest side in every direction (no check without walls).
+  std::optional<Domain> domain;
+};
+
 struct SolverSettings {
   PressureSettings pressure;
   ImplicitSettings implicit;
+  HealthSettings health;
   int sortInterval = 500; ///< Morton reorder period in steps, 0 = never
   int threads = 0;        ///< OpenMP threads, 0 = the OpenMP default
 

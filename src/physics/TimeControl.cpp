@@ -42,6 +42,12 @@ TimeControl TimeControl::read(const Dictionary& dict) {
     t.writeInterval = static_cast<double>(dict.getInt("writeInterval", Range::atLeast(1)));
   else
     t.writeInterval = dict.getReal("writeInterval", Range::positive());
+  const std::string stopAt = dict.getWord("stopAt", {"endTime", "writeNow", "noWriteNow", "nextWrite"}, "endTime");
+  t.stopAt = stopAt == "writeNow"     ? StopAt::WriteNow
+             : stopAt == "noWriteNow" ? StopAt::NoWriteNow
+             : stopAt == "nextWrite"  ? StopAt::NextWrite
+                                      : StopAt::EndTime;
+  t.runTimeModifiable = dict.getBool("runTimeModifiable", true);
   return t;
 }
 

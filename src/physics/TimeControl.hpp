@@ -10,6 +10,9 @@ class Dictionary;
 struct TimeControl {
   enum class StartFrom { StartTime, LatestTime };
   enum class WriteControl { TimeStep, RunTime };
+  /// OpenFOAM's stopAt: run to endTime, or stop after the current step writing it (writeNow), not writing
+  /// it (noWriteNow), or at the next write time (nextWrite). Set while running, with runTimeModifiable.
+  enum class StopAt { EndTime, WriteNow, NoWriteNow, NextWrite };
 
   StartFrom startFrom = StartFrom::StartTime;
   double startTime = 0.0;        ///< [s]
@@ -22,6 +25,8 @@ struct TimeControl {
   double maxDeltaT = 5e-3;       ///< [s]
   WriteControl writeControl = WriteControl::RunTime;
   double writeInterval = 0.0; ///< seconds (runTime) or steps (timeStep), > 0, required
+  StopAt stopAt = StopAt::EndTime;
+  bool runTimeModifiable = true; ///< re-read system/controlDict when it changes while running
 
   /// Reads and validates the time keys (does not check for unknown keys: the file has output keys too).
   static TimeControl read(const Dictionary& dict);

@@ -25,7 +25,7 @@ struct ParticleSet::Field final : FieldBase {
   std::vector<T> data;
   void resize(std::size_t n) override { data.resize(n, T::Zero()); }
   void permute(const std::vector<Index>& order) override {
-    std::vector<T> sorted(data.size());
+    std::vector<T> sorted(order.size());
     for (std::size_t i = 0; i < order.size(); ++i) sorted[i] = data[static_cast<std::size_t>(order[i])];
     data.swap(sorted);
   }
@@ -118,6 +118,22 @@ const std::vector<std::int64_t>& ParticleSet::integer(const std::string& n) cons
 void ParticleSet::permute(const std::vector<Index>& order) {
   if (order.size() != size_) throw std::logic_error("ParticleSet::permute: order has the wrong length");
   for (auto& f : fields_) f->permute(order);
+}
+
+void ParticleSet::remove(const std::vector<std::size_t>& indices) {
+  std::vector<Index> kept;
+  kept.reserve(size_);
+  std::size_t next = 0; // position in `indices`
+  for (std::size_t i = 0; i < size_; ++i) {
+    if (next < indices.size() && indices[next] == i) {
+      ++next;
+      continue;
+    }
+    kept.push_back(static_cast<Index>(i));
+  }
+  if (next != indices.size()) throw std::logic_error("ParticleSet::remove: indices not ascending or out of range");
+  for (auto& f : fields_) f->permute(kept); // a gather into kept.size() slots
+  size_ = kept.size();
 }
 
 } // namespace poro

@@ -73,6 +73,8 @@ public:
 
   /// Reorders every field: new slot i receives old slot order[i]. `order` must be a permutation.
   void permute(const std::vector<Index>& order);
+  /// Deletes the particles at `indices` (ascending, distinct) from every field; the others keep their order.
+  void remove(const std::vector<std::size_t>& indices);
 
   /// Shorthands for the position and velocity fields every set has.
   std::vector<Vec3>& x() { return *x_; }

@@ -1,0 +1,41 @@
+#pragma once
+/// Health checks after each step (solverDict health): particles whose position or velocity is not finite,
+/// and particles that left the domain. Finding them is cheap when all is well (one parallel count per set);
+/// listing them is serial and only happens when something is wrong.
+
+#include "physics/SolverSettings.hpp"
+#include "sph/ParticleSystem.hpp"
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace poro {
+
+/// Particles of one set that failed a check, by index in set order (ascending).
+struct Offenders {
+  std::size_t set = 0;
+  std::vector<std::size_t> particles;
+};
+
+/// Sets among `sets` with particles whose position or velocity has a NaN or inf.
+std::vector<Offenders> findNonFinite(const ParticleSystem& particles, const std::vector<std::size_t>& sets);
+/// Sets among `sets` with particles outside `domain`.
+std::vector<Offenders> findOutside(const ParticleSystem& particles, const std::vector<std::size_t>& sets,
+                                   const Domain& domain);
+std::size_t count(const std::vector<Offenders>& offenders);
+
+/// The default domain: the bounding box of the boundary sets grown by its longest side in every direction;
+/// none without boundary particles.
+std::optional<Domain> wallDomain(const ParticleSystem& particles, const std::vector<std::size_t>& boundarySets);
+
+/// "2 fluid particles: id 17 at (0.1, 0.2, 0.3), id 18 at (...)", listing at most five; `position` gives the
+/// position to show for particle i of set s (e.g. the last finite one).
+std::string describe(const ParticleSystem& particles, const std::vector<Offenders>& offenders,
+                     const std::function<Vec3(std::size_t set, std::size_t i)>& position);
+
+/// Deletes the offenders from their sets.
+void removeParticles(ParticleSystem& particles, const std::vector<Offenders>& offenders);
+
+} // namespace poro

@@ -1,0 +1,42 @@
+#pragma once
+/// The state of the moving particle sets before a step: every output field (restart fields included) and the
+/// run state. A step that ends in NaN is undone with it, so the last finite state can be written and a run
+/// restarted from it (solverDict health.nonFinite stop).
+
+#include "physics/RunState.hpp"
+#include "sph/ParticleSystem.hpp"
+
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace poro {
+
+class StateSnapshot {
+public:
+  /// Copies the output fields of `sets`; storage is reused from step to step.
+  void take(const ParticleSystem& particles, const std::vector<std::size_t>& sets, const RunState& state);
+  /// Puts the copied fields (and particle counts) back.
+  void restore(ParticleSystem& particles, RunState& state) const;
+
+  const RunState& state() const { return state_; }
+  /// Where the particle with persistent id `id` of set `set` was when the snapshot was taken.
+  std::optional<Vec3> positionOf(std::size_t set, std::int64_t id) const;
+
+private:
+  using Data = std::variant<std::vector<Real>, std::vector<Vec3>, std::vector<Mat3>, std::vector<std::int64_t>>;
+  struct Field {
+    std::string name;
+    Data data;
+  };
+  struct Set {
+    std::size_t index = 0;
+    std::size_t size = 0;
+    std::vector<Field> fields;
+  };
+  std::vector<Set> sets_;
+  RunState state_;
+};
+
+} // namespace poro

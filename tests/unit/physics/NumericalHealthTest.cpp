@@ -1,0 +1,256 @@
+// The health checks of solverDict (NaN, leaving the domain, iteration limits) and the stop controls of the
+// time loop (stopAt, runTimeModifiable), driven through Solver::run as the application drives it.
+
+#include "core/Error.hpp"
+#include "geometry/LatticeSampling.hpp"
+#include "physics/FieldNames.hpp"
+#include "physics/Solver.hpp"
+#include "physics/StateSnapshot.hpp"
+
+#include <gtest/gtest.h>
+
+namespace poro {
+namespace {
+
+constexpr double kR = 0.01;
+constexpr double kDt = 1e-3;
+
+/// A resting block of water, 8 x 8 x 8 particles, without walls (no default domain).
+ParticleSystem waterBlock() {
+  ParticleSystem ps(kR);
+  ParticleSet& fluid = ps.add("fluid", SetKind::Fluid);
+  const auto points = sampleBox(Vec3::Zero(), Vec3::Constant(0.16), kR);
+  fluid.resize(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    fluid.x()[i] = points[i];
+    fluid.integer(field::id)[i] = static_cast<std::int64_t>(i);
+  }
+  return ps;
+}
+
+TimeControl steps(int n, int writeEvery = 1000) {
+  TimeControl control;
+  control.deltaT = kDt;
+  control.endTime = n * kDt;
+  control.writeControl = TimeControl::WriteControl::TimeStep;
+  control.writeInterval = writeEvery;
+  return control;
+}
+
+/// What a writer saw: the step and positions of every write.
+struct Writes {
+  std::vector<long long> steps;
+  std::vector<std::vector<Vec3>> positions;
+  Solver::Writer writer() {
+    return [this](const Solver& s) {
+      steps.push_back(s.state().step);
+      positions.push_back(s.particles()[0].x());
+    };
+  }
+};
+
+std::string runExpectingStop(Solver& solver, Writes& writes) {
+  try {
+    solver.run(writes.writer());
+  } catch (const NumericalError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "the run did not stop";
+  return "";
+}
+
+TEST(StateSnapshot, RestoreGivesBackFieldsAndParticleCount) {
+  ParticleSystem ps = waterBlock();
+  ParticleSet& set = ps[0];
+  auto& pressure = set.addReal("pressure", Output);
+  set.addReal("scratch");
+  for (std::size_t i = 0; i < set.size(); ++i) pressure[i] = static_cast<double>(i);
+  const std::vector<Vec3> x = set.x();
+  const std::vector<double> p = pressure;
+  StateSnapshot snapshot;
+  snapshot.take(ps, {0}, RunState{0.5, 7, 1e-3});
+  for (auto& xi : set.x()) xi.x() += 1.0;
+  set.remove({0, 1, 2});
+  RunState state;
+  snapshot.restore(ps, state);
+  EXPECT_EQ(set.x(), x);
+  EXPECT_EQ(pressure, p);
+  EXPECT_EQ(state.step, 7);
+  EXPECT_EQ(state.time, 0.5);
+  EXPECT_EQ(*snapshot.positionOf(0, 5), x[5]);
+  EXPECT_FALSE(snapshot.positionOf(0, 100000).has_value());
+}
+
+TEST(Health, NaNUndoesTheStepAndWritesTheLastFiniteState) {
+  // NaN in step 3: the run writes the state after step 2 -- bit for bit what an undisturbed run has there --
+  // and stops with a message naming the particle, its last position and what to change.
+  Solver reference(waterBlock(), FluidProperties{}, {}, SolverSettings{}, steps(2), RunState{});
+  reference.run([](const Solver&) {});
+  Solver solver(waterBlock(), FluidProperties{}, {}, SolverSettings{}, steps(10), RunState{});
+  solver.injectNaN(3);
+  Writes writes;
+  const std::string message = runExpectingStop(solver, writes);
+  ASSERT_EQ(writes.steps, std::vector<long long>{2});
+  EXPECT_EQ(writes.positions[0], reference.particles()[0].x());
+  EXPECT_EQ(solver.state().step, 2);
+  EXPECT_NE(message.find("step 3 "), std::string::npos) << message;
+  // The injected NaN velocity reaches only its own particle's position; its neighbours' step was done.
+  EXPECT_NE(message.find("NaN or infinite position or velocity in 1 fluid particle: id 0 at (0.01, 0.00997"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("reduce deltaT (now 0.001 s) in system/controlDict"), std::string::npos) << message;
+  EXPECT_NE(message.find("is written"), std::string::npos) << message;
+}
+
+TEST(Health, NaNRightAfterAWriteIsNotWrittenTwice) {
+  Solver solver(waterBlock(), FluidProperties{}, {}, SolverSettings{}, steps(10, 2), RunState{});
+  solver.injectNaN(3);
+  Writes writes;
+  const std::string message = runExpectingStop(solver, writes);
+  EXPECT_EQ(writes.steps, std::vector<long long>{2});
+  EXPECT_NE(message.find("already on disk"), std::string::npos) << message;
+}
+
+TEST(Health, NaNParticlesCanBeRemovedInstead) {
+  SolverSettings settings;
+  settings.health.nonFinite = HealthAction::Remove;
+  Solver solver(waterBlock(), FluidProperties{}, {}, settings, steps(5), RunState{});
+  const std::size_t before = solver.particles()[0].size();
+  solver.injectNaN(3);
+  Writes writes;
+  EXPECT_EQ(solver.run(writes.writer()).end, RunOutcome::End::EndTime);
+  const ParticleSet& fluid = solver.particles()[0];
+  EXPECT_LT(fluid.size(), before);
+  for (std::size_t i = 0; i < fluid.size(); ++i) ASSERT_TRUE(fluid.x()[i].allFinite() && fluid.v()[i].allFinite());
+  EXPECT_EQ(writes.steps, std::vector<long long>{5});
+}
+
+/// A block falling freely out of a domain whose floor is 1 mm below it.
+Solver fallingBlock(HealthAction action) {
+  SolverSettings settings;
+  settings.health.leavingDomain = action;
+  settings.health.domain = Domain{Vec3::Constant(-1.0), Vec3::Constant(1.0)};
+  settings.health.domain->min.y() = 0.01 - 0.001 - 1e-12; // the lowest row starts at y = r
+  return Solver(waterBlock(), FluidProperties{}, {}, settings, steps(20), RunState{});
+}
+
+TEST(Health, ParticlesLeavingTheDomainAreRemovedByDefault) {
+  // Free fall: y = r - g dt^2 n(n+1)/2 passes 1 mm below the start in step 14; the bottom row (64
+  // particles) goes then, the rows above keep their distance 2r and stay.
+  Solver solver = fallingBlock(HealthAction::Remove);
+  Writes writes;
+  EXPECT_EQ(solver.run(writes.writer()).end, RunOutcome::End::EndTime);
+  EXPECT_EQ(solver.particles()[0].size(), 512u - 64u);
+  for (const Vec3& x : solver.particles()[0].x()) EXPECT_GT(x.y(), 0.009);
+}
+
+TEST(Health, ParticlesLeavingTheDomainCanStopTheRun) {
+  Solver solver = fallingBlock(HealthAction::Stop);
+  Writes writes;
+  const std::string message = runExpectingStop(solver, writes);
+  ASSERT_EQ(writes.steps, std::vector<long long>{14});
+  EXPECT_EQ(writes.positions[0].size(), 512u);
+  EXPECT_NE(message.find("64 fluid particles: id 0 at (0.01, 0.0"), std::string::npos) << message;
+  EXPECT_NE(message.find("left the domain (-1, 0.009, -1) - (1, 1, 1)"), std::string::npos) << message;
+  EXPECT_NE(message.find("health.leavingDomain stop"), std::string::npos) << message;
+}
+
+TEST(Health, ParticlesLeavingTheDomainCanBeKept) {
+  Solver solver = fallingBlock(HealthAction::Warn);
+  Writes writes;
+  EXPECT_EQ(solver.run(writes.writer()).end, RunOutcome::End::EndTime);
+  EXPECT_EQ(solver.particles()[0].size(), 512u);
+}
+
+TEST(Health, DefaultDomainIsTheWallBoxGrownByItsLongestSide) {
+  // Walls spanning (1, 1, 1) - (1.2, 1.3, 1.1): longest side 0.3, domain (0.7, 0.7, 0.7) - (1.5, 1.6, 1.4),
+  // which the block (0 - 0.16) is outside of from the first step.
+  ParticleSystem ps = waterBlock();
+  ParticleSet& wall = ps.add("boundary", SetKind::Boundary);
+  wall.resize(2);
+  wall.x()[0] = Vec3(1.0, 1.0, 1.0);
+  wall.x()[1] = Vec3(1.2, 1.3, 1.1);
+  SolverSettings settings;
+  settings.health.leavingDomain = HealthAction::Stop;
+  Solver solver(std::move(ps), FluidProperties{}, {}, settings, steps(10), RunState{});
+  Writes writes;
+  const std::string message = runExpectingStop(solver, writes);
+  EXPECT_EQ(writes.steps, std::vector<long long>{1});
+  EXPECT_NE(message.find("512 fluid particles"), std::string::npos) << message;
+  EXPECT_NE(message.find("left the domain (0.7, 0.7, 0.7) - (1.5, 1.6, 1.4), the walls' bounding box grown"),
+            std::string::npos)
+      << message;
+}
+
+TEST(Health, PressureIterationLimitCanStopTheRun) {
+  // A compressed blob with one sweep allowed cannot converge; policy stop writes this step and names the
+  // most compressed particle.
+  ParticleSystem ps(kR);
+  ParticleSet& fluid = ps.add("fluid", SetKind::Fluid);
+  const auto points = sampleBox(Vec3::Zero(), Vec3::Constant(0.16), kR);
+  fluid.resize(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    fluid.x()[i] = 0.9 * points[i];
+    fluid.integer(field::id)[i] = static_cast<std::int64_t>(i);
+  }
+  SolverSettings settings;
+  settings.pressure.minIterations = settings.pressure.maxIterations = 1;
+  settings.health.pressureIterations = HealthAction::Stop;
+  Solver solver(std::move(ps), FluidProperties{}, {}, settings, steps(5), RunState{});
+  Writes writes;
+  const std::string message = runExpectingStop(solver, writes);
+  EXPECT_EQ(writes.steps, std::vector<long long>{1});
+  EXPECT_NE(message.find("pressure.maxIterations = 1 with mean density error"), std::string::npos) << message;
+  EXPECT_NE(message.find("most compressed: fluid particle id"), std::string::npos) << message;
+}
+
+TEST(TimeLoop, StopAtWriteNowSetWhileRunningWritesAndStops) {
+  Solver solver(waterBlock(), FluidProperties{}, {}, SolverSettings{}, steps(10), RunState{});
+  Writes writes;
+  const auto monitor = [](Solver& s) {
+    if (s.state().step != 3) return;
+    TimeControl control = s.timeControl();
+    control.stopAt = TimeControl::StopAt::WriteNow;
+    s.setTimeControl(control);
+  };
+  EXPECT_EQ(solver.run(writes.writer(), monitor).end, RunOutcome::End::StopAt);
+  EXPECT_EQ(writes.steps, std::vector<long long>{3});
+}
+
+TEST(TimeLoop, StopAtNextWriteAndNoWriteNow) {
+  Solver next(waterBlock(), FluidProperties{}, {}, SolverSettings{}, steps(10, 4), RunState{});
+  Writes nextWrites;
+  auto set = [](TimeControl::StopAt stopAt) {
+    return [stopAt](Solver& s) {
+      if (s.state().step != 1) return;
+      TimeControl control = s.timeControl();
+      control.stopAt = stopAt;
+      s.setTimeControl(control);
+    };
+  };
+  EXPECT_EQ(next.run(nextWrites.writer(), set(TimeControl::StopAt::NextWrite)).end, RunOutcome::End::StopAt);
+  EXPECT_EQ(nextWrites.steps, std::vector<long long>{4});
+  Solver now(waterBlock(), FluidProperties{}, {}, SolverSettings{}, steps(10, 4), RunState{});
+  Writes nowWrites;
+  EXPECT_EQ(now.run(nowWrites.writer(), set(TimeControl::StopAt::NoWriteNow)).end, RunOutcome::End::StopAt);
+  EXPECT_TRUE(nowWrites.steps.empty());
+  EXPECT_EQ(now.state().step, 1);
+}
+
+TEST(TimeLoop, EndTimeAndWriteIntervalChangedWhileRunning) {
+  // At step 2: endTime 10 -> 6 steps, writeInterval 1000 -> 2 steps; and deltaT takes effect at once.
+  Solver solver(waterBlock(), FluidProperties{}, {}, SolverSettings{}, steps(10), RunState{});
+  Writes writes;
+  const auto monitor = [](Solver& s) {
+    if (s.state().step != 2) return;
+    TimeControl control = s.timeControl();
+    control.endTime = 6 * kDt;
+    control.writeInterval = 2;
+    s.setTimeControl(control);
+  };
+  EXPECT_EQ(solver.run(writes.writer(), monitor).end, RunOutcome::End::EndTime);
+  EXPECT_EQ(writes.steps, (std::vector<long long>{2, 4, 6}));
+}
+
+} // namespace
+} // namespace poro
