@@ -52,6 +52,11 @@ int main(int argc, char* argv[]) try {
   const RunOutcome outcome =
       solver.run([&](const Solver& s) { writer.write(s.particles(), s.state()); }, rereadControlDict);
   return outcome.end == RunOutcome::End::Signal ? 1 : 0;
+} catch (const OutputError& e) {
+  log::fatal(OutputError(std::string(e.what()) +
+                         "\nEarlier time directories are intact. Free disk space (or fix the permissions), then "
+                         "continue with startFrom latestTime in system/controlDict."));
+  return 1;
 } catch (const Error& e) {
   log::fatal(e);
   return 1;

@@ -13,7 +13,7 @@ bool quiet_ = false;
 void setQuiet(bool quiet) { quiet_ = quiet; }
 
 void info(const std::string& message) {
-  if (!quiet_) std::cout << message << '\n';
+  if (!quiet_) std::cout << message << std::endl; // flushed: `tail -f log.poroSph` follows the run step by step
 }
 
 void warning(const std::string& message) {

@@ -343,7 +343,7 @@ void Solver::checkIterations(const Writer& write) {
         << " with mean density error " << report_.pressure.meanError << " % (target "
         << settings_.pressure.maxDensityError << " %); most compressed: " << set.name() << " particle id "
         << set.integer(field::id)[i] << " at (" << p.x() << ", " << p.y() << ", " << p.z() << "), "
-        << report_.pressure.maxError << " %. " << whatToChange()
+        << report_.pressure.maxError << " %. To converge: " << whatToChange()
         << ", or raise pressure.maxIterations in system/solverDict";
     if (health.pressureIterations == HealthAction::Stop)
       stopAfterWriting(write, msg.str() + " (health.pressureIterations stop).");
@@ -354,7 +354,7 @@ void Solver::checkIterations(const Writer& write) {
     msg << std::setprecision(6) << "step " << state_.step << " (time " << state_.time
         << " s): the implicit solve (viscosity, drag, buoyancy) reached implicit.maxIterations = "
         << settings_.implicit.maxIterations << " with relative residual " << report_.implicit.relativeResidual
-        << " (tolerance " << settings_.implicit.tolerance << "). " << whatToChange()
+        << " (tolerance " << settings_.implicit.tolerance << "). To converge: " << whatToChange()
         << ", or raise implicit.maxIterations in system/solverDict";
     if (health.implicitIterations == HealthAction::Stop)
       stopAfterWriting(write, msg.str() + " (health.implicitIterations stop).");
