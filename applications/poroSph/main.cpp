@@ -7,6 +7,7 @@
 #include "core/StopSignals.hpp"
 #include "io/CaseReader.hpp"
 #include "io/ControlDictWatcher.hpp"
+#include "io/SolverPerformanceLog.hpp"
 #include "io/TimeDirectory.hpp"
 
 #include <cstdlib>
@@ -49,8 +50,9 @@ int main(int argc, char* argv[]) try {
     writer.setSettings(current.output);
   };
   signals::installStopHandlers();
-  const RunOutcome outcome =
-      solver.run([&](const Solver& s) { writer.write(s.particles(), s.state()); }, rereadControlDict);
+  SolverPerformanceLog performance(args.caseDir(), simulation.startName);
+  const RunOutcome outcome = solver.run([&](const Solver& s) { writer.write(s.particles(), s.state()); },
+                                        rereadControlDict, [&](const Solver& s) { performance.record(s); });
   return outcome.end == RunOutcome::End::Signal ? 1 : 0;
 } catch (const OutputError& e) {
   log::fatal(OutputError(std::string(e.what()) +

@@ -362,7 +362,7 @@ void Solver::checkIterations(const Writer& write) {
   }
 }
 
-RunOutcome Solver::run(const Writer& write, const Monitor& afterStep) {
+RunOutcome Solver::run(const Writer& write, const Monitor& afterStep, const Observer& stepDone) {
   using StopAt = TimeControl::StopAt;
   const Timer clock;
   const double startTime = state_.time;
@@ -372,10 +372,16 @@ RunOutcome Solver::run(const Writer& write, const Monitor& afterStep) {
   while (state_.time < control_.endTime - endSlack()) {
     const double previousTime = state_.time;
     const double dt = stepSizeFor(state_.nextDeltaT);
-    snapshot_.take(particles_, dynamicSets_, state_);
+    {
+      ScopedPhase phase(phases_, "health");
+      snapshot_.take(particles_, dynamicSets_, state_);
+    }
     step(dt);
     logProgress(clock.seconds(), startTime);
-    checkHealth(write);
+    {
+      ScopedPhase phase(phases_, "health");
+      checkHealth(write);
+    }
     if (afterStep) afterStep(*this);
     const bool last = !(state_.time < control_.endTime - endSlack());
     const int signal = signals::stopRequested();
@@ -383,6 +389,7 @@ RunOutcome Solver::run(const Writer& write, const Monitor& afterStep) {
     const StopAt stopAt = control_.stopAt;
     const bool skipWrite = stopAt == StopAt::NoWriteNow && !signal;
     if ((writeTime || last || signal || stopAt == StopAt::WriteNow) && !skipWrite) writeState(write);
+    if (stepDone) stepDone(*this);
     if (last) break;
     std::ostringstream msg;
     msg << std::setprecision(10);

@@ -48,11 +48,13 @@ public:
   using Writer = std::function<void(const Solver&)>;
   /// Called after each step, before the write decision; may change the time control (runTimeModifiable).
   using Monitor = std::function<void(Solver&)>;
+  /// Called at the very end of each step, after any write (per-step records such as solverPerformance).
+  using Observer = std::function<void(const Solver&)>;
   /// Advances to endTime, logging progress per step and calling `write` at every write time. SIGINT or
   /// SIGTERM (core/StopSignals.hpp) and stopAt end the run after the current step. After each step the
   /// health checks of solverDict run; a failed check with policy stop writes the last good state and throws
   /// NumericalError naming the particles, where they are and what to change.
-  RunOutcome run(const Writer& write, const Monitor& afterStep = {});
+  RunOutcome run(const Writer& write, const Monitor& afterStep = {}, const Observer& stepDone = {});
   /// One time step of size `deltaT` (METHOD.md §5).
   void step(double deltaT);
   /// Steps 1-4 of METHOD.md §5 at the current positions (neighbour search, densities, alpha, saturation,

@@ -1,0 +1,38 @@
+#pragma once
+/// postProcessing/solverPerformance/<startTime>/solverPerformance.csv: one row per step with the step size,
+/// pressure and CG convergence and the wall time of each phase, so that convergence and cost can be plotted
+/// (OpenFOAM keeps function-object output under postProcessing/<name>/<startTime>/ the same way).
+
+#include "physics/Solver.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace poro {
+
+class SolverPerformanceLog {
+public:
+  /// Creates the file (replacing one of an earlier run from the same start time) and writes the header.
+  SolverPerformanceLog(const std::filesystem::path& caseDir, const std::string& startName);
+
+  /// Appends the row of the step just done. A failed write is reported once and ends the log, not the run:
+  /// the time directories are what must not be lost.
+  void record(const Solver& solver);
+
+  const std::filesystem::path& file() const { return file_; }
+  /// Phases with a column of their own, in column order.
+  static const std::vector<std::string>& phaseColumns();
+
+private:
+  double phaseSeconds(const Solver& solver, const std::string& phase) const;
+  void fail();
+
+  std::filesystem::path file_;
+  std::ofstream out_;
+  std::vector<double> previous_; ///< accumulated phase seconds at the previous row, by column
+  bool failed_ = false;
+};
+
+} // namespace poro
