@@ -1,0 +1,67 @@
+#include "analysis/SaturationStatistics.hpp"
+
+#include "core/Error.hpp"
+#include "physics/FieldNames.hpp"
+
+#include <algorithm>
+
+namespace poro {
+
+namespace {
+
+double porosityOf(const ParticleSet& set, const std::vector<PorousMaterial>& materials) {
+  for (const PorousMaterial& m : materials)
+    if (m.name == set.name()) return m.porosity;
+  throw InputError("porous particle set '" + set.name() + "': no such material in constant/porosityProperties");
+}
+
+} // namespace
+
+ObjectStatistics objectStatistics(const ParticleSystem& particles, const PorousObject& object, std::size_t absorbed,
+                                  const AnalysisSettings& settings) {
+  const double volume = settings.particleVolume();
+  ObjectStatistics stats;
+  stats.objectId = object.objectId;
+  stats.name = object.name;
+  stats.solidParticles = object.particles.size();
+  stats.absorbedParticles = absorbed;
+  stats.absorbedVolume = static_cast<double>(absorbed) * volume;
+  stats.absorbedMass = static_cast<double>(absorbed) * settings.fluidDensity * volume;
+
+  // Pore volume per set as phi N V: the sum over particles would add round-off to a known product.
+  bool saturated = true; // every set of the object has a saturation field
+  std::vector<std::size_t> perSet(particles.size(), 0);
+  for (const auto& particle : object.particles) {
+    saturated = saturated && particles[particle.first].has(field::saturation);
+    ++perSet[particle.first];
+  }
+  for (std::size_t set = 0; set < particles.size(); ++set)
+    if (perSet[set] > 0)
+      stats.poreVolume += porosityOf(particles[set], settings.materials) * static_cast<double>(perSet[set]) * volume;
+
+  stats.fractionFilled = stats.poreVolume > 0.0 ? stats.absorbedVolume / stats.poreVolume : 0.0;
+  if (!saturated || object.particles.empty()) return stats; // saturation unknown (0/ of sampleParticles)
+
+  double sum = 0.0, largest = 0.0, lo = 0.0, hi = 0.0;
+  for (const auto& [set, i] : object.particles) {
+    const double s = particles[set].real(field::saturation)[i];
+    sum += s;
+    largest = std::max(largest, s);
+    if (s < settings.wetThreshold) continue;
+    const double c = settings.axis.coordinate(particles[set].x()[i]);
+    lo = stats.wetParticles == 0 ? c : std::min(lo, c);
+    hi = stats.wetParticles == 0 ? c : std::max(hi, c);
+    ++stats.wetParticles;
+  }
+  stats.meanSaturation = sum / static_cast<double>(stats.solidParticles);
+  stats.maxSaturation = largest;
+  stats.wetHeight = 0.0;
+  if (stats.wetParticles > 0) {
+    stats.wetMin = lo;
+    stats.wetMax = hi;
+    stats.wetHeight = hi - lo;
+  }
+  return stats;
+}
+
+} // namespace poro

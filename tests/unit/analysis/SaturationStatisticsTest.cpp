@@ -1,0 +1,185 @@
+// Absorbed fluid, pore volume, saturation statistics and fronts of a synthetic system with known answers.
+
+#include "AnalysisTestSystems.hpp"
+#include "analysis/AbsorbedFluid.hpp"
+#include "analysis/SaturationAnalysis.hpp"
+#include "core/Error.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace poro::test {
+namespace {
+
+const double kV = 8.0 * kR * kR * kR;
+
+TEST(PorousObjects, GroupsPorousParticlesByObjectIdAndNamesThemByRegion) {
+  const ParticleSystem ps = syntheticSystem();
+  const auto objects = findPorousObjects(ps, syntheticSettings().regionNames);
+  ASSERT_EQ(objects.size(), 2u);
+  EXPECT_EQ(objects[0].objectId, 1);
+  EXPECT_EQ(objects[0].name, "block");
+  EXPECT_EQ(objects[0].particles.size(), 64u);
+  EXPECT_EQ(objects[1].objectId, 3);
+  EXPECT_EQ(objects[1].name, "object3"); // beyond the region list
+  EXPECT_EQ(objects[1].particles.size(), 8u);
+}
+
+TEST(AbsorbedFluid, CountsFluidInTheLatticeCellsOfEachObject) {
+  const ParticleSystem ps = syntheticSystem();
+  const auto objects = findPorousObjects(ps, {});
+  const auto counts = countAbsorbedFluid(ps[0].x(), ps, objects, kR);
+  EXPECT_EQ(counts[0], fluidInBlock().size()); // faces and corners inside, the shared corner counted once
+  EXPECT_EQ(counts[1], fluidInSand().size());
+}
+
+TEST(AbsorbedFluid, EqualsBruteForceOnADeformedLattice) {
+  // Cabana-style: the hash grid finds exactly the pairs an all-pairs max-norm test finds.
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> jitter(-0.6 * kR, 0.6 * kR), place(-0.02, 0.14);
+  ParticleSystem ps(kR);
+  std::vector<Vec3> fluid(3000);
+  for (Vec3& x : fluid) x = Vec3(place(random), place(random), place(random));
+  addSet(ps, "fluid", SetKind::Fluid, fluid, 0);
+  std::vector<Vec3> solid = lattice(6, Vec3::Zero());
+  for (Vec3& x : solid) x += Vec3(jitter(random), jitter(random), jitter(random));
+  ParticleSet& set = addSet(ps, "soil", SetKind::Porous, solid, 0);
+  for (std::size_t i = 0; i < set.size(); i += 2) set.integer(field::objectId)[i] = 1; // two interleaved objects
+  const auto objects = findPorousObjects(ps, {});
+  const auto counts = countAbsorbedFluid(fluid, ps, objects, kR);
+  for (std::size_t k = 0; k < objects.size(); ++k) {
+    std::size_t expected = 0;
+    for (const Vec3& f : fluid) {
+      bool inside = false;
+      for (const auto& [s, i] : objects[k].particles) inside = inside || (f - ps[s].x()[i]).cwiseAbs().maxCoeff() <= kR;
+      expected += inside ? 1 : 0;
+    }
+    EXPECT_EQ(counts[k], expected) << "object " << objects[k].objectId;
+    EXPECT_GT(expected, 100u);
+  }
+}
+
+TEST(SaturationStatistics, ExactVolumesSaturationsAndFront) {
+  const ParticleSystem ps = syntheticSystem();
+  const AnalysisSettings settings = syntheticSettings();
+  const TimeRecord record = analyse(ps, settings);
+  ASSERT_EQ(record.objects.size(), 2u);
+
+  const ObjectStatistics& block = record.objects[0];
+  EXPECT_EQ(block.name, "block");
+  EXPECT_EQ(block.solidParticles, 64u);
+  EXPECT_EQ(block.absorbedParticles, 10u);
+  EXPECT_DOUBLE_EQ(block.absorbedVolume, 10 * kV);
+  EXPECT_DOUBLE_EQ(block.absorbedMass, 10 * 1000.0 * kV);
+  EXPECT_DOUBLE_EQ(block.poreVolume, 0.4 * 64 * kV);
+  EXPECT_DOUBLE_EQ(block.fractionFilled, 10.0 / (0.4 * 64));
+  EXPECT_DOUBLE_EQ(*block.meanSaturation, 0.5); // layers 0, 0.25, 0.75, 1
+  EXPECT_DOUBLE_EQ(*block.maxSaturation, 1.0);
+  EXPECT_EQ(block.wetParticles, 32u); // the two upper layers
+  EXPECT_NEAR(*block.wetMin, 0.05, 1e-15);
+  EXPECT_NEAR(*block.wetMax, 0.07, 1e-15);
+  EXPECT_NEAR(*block.wetHeight, 0.02, 1e-15);
+
+  const ObjectStatistics& sand = record.objects[1];
+  EXPECT_EQ(sand.absorbedParticles, 3u);
+  EXPECT_DOUBLE_EQ(sand.poreVolume, 0.6 * 8 * kV);
+  EXPECT_DOUBLE_EQ(*sand.meanSaturation, kSandSaturation);
+  EXPECT_EQ(sand.wetParticles, 0u);
+  EXPECT_FALSE(sand.wetMin);
+  EXPECT_FALSE(sand.wetMax);
+  EXPECT_EQ(*sand.wetHeight, 0.0); // nothing wet: height 0
+}
+
+TEST(SaturationStatistics, WetThresholdAndAxisDirection) {
+  AnalysisSettings settings = syntheticSettings();
+  settings.wetThreshold = 0.2;
+  settings.axis = Axis::parse("-y");
+  const TimeRecord record = analyse(syntheticSystem(), settings);
+  const ObjectStatistics& block = record.objects[0];
+  EXPECT_EQ(block.wetParticles, 48u); // 0.25, 0.75 and 1
+  EXPECT_NEAR(*block.wetMin, -0.07, 1e-15);
+  EXPECT_NEAR(*block.wetMax, -0.03, 1e-15);
+  EXPECT_EQ(record.objects[1].wetParticles, 8u); // saturation 0.2 >= 0.2
+}
+
+TEST(SaturationStatistics, WithoutSaturationFieldSaturationIsUnknown) {
+  const TimeRecord record = analyse(syntheticSystem(false), syntheticSettings());
+  const ObjectStatistics& block = record.objects[0];
+  EXPECT_EQ(block.absorbedParticles, 10u); // positions alone decide what is absorbed
+  EXPECT_FALSE(block.meanSaturation);
+  EXPECT_FALSE(block.maxSaturation);
+  EXPECT_FALSE(block.wetHeight);
+  EXPECT_TRUE(record.profiles[0].empty());
+  EXPECT_FALSE(record.fluid.meanDensityError);
+}
+
+TEST(SaturationStatistics, UnknownMaterialIsAnInputError) {
+  AnalysisSettings settings = syntheticSettings();
+  settings.materials.pop_back(); // no "sand"
+  EXPECT_THROW(analyse(syntheticSystem(), settings), InputError);
+}
+
+TEST(SaturationProfiles, OneBinPerLatticeLayer) {
+  const ParticleSystem ps = syntheticSystem();
+  const TimeRecord record = analyse(ps, syntheticSettings());
+  const auto& block = record.profiles[0];
+  ASSERT_EQ(block.size(), 4u);
+  for (std::size_t j = 0; j < 4; ++j) {
+    EXPECT_NEAR(block[j].position, kR + 2 * kR * static_cast<double>(j), 1e-15);
+    EXPECT_DOUBLE_EQ(block[j].meanSaturation, kLayerSaturation[j]);
+    EXPECT_EQ(block[j].particles, 16u);
+  }
+  const auto& sand = record.profiles[1];
+  ASSERT_EQ(sand.size(), 2u);
+  EXPECT_NEAR(sand[1].position, 3 * kR, 1e-15);
+  EXPECT_DOUBLE_EQ(sand[1].meanSaturation, kSandSaturation);
+  EXPECT_EQ(sand[1].particles, 4u);
+}
+
+TEST(SaturationProfiles, AlongANegativeAxisTheLayersComeReversed) {
+  AnalysisSettings settings = syntheticSettings();
+  settings.axis = Axis::parse("-y");
+  const auto profile = analyse(syntheticSystem(), settings).profiles[0];
+  ASSERT_EQ(profile.size(), 4u);
+  EXPECT_NEAR(profile[0].position, -0.07, 1e-15);
+  EXPECT_DOUBLE_EQ(profile[0].meanSaturation, kLayerSaturation[3]);
+  EXPECT_DOUBLE_EQ(profile[3].meanSaturation, kLayerSaturation[0]);
+}
+
+TEST(SaturationProfiles, AlongXEveryBinMixesAllLayers) {
+  AnalysisSettings settings = syntheticSettings();
+  settings.axis = Axis::parse("x");
+  const auto profile = analyse(syntheticSystem(), settings).profiles[0];
+  ASSERT_EQ(profile.size(), 4u);
+  for (const ProfileBin& bin : profile) EXPECT_DOUBLE_EQ(bin.meanSaturation, 0.5);
+}
+
+TEST(FluidStatistics, KineticEnergyMomentumAndCompressionOnlyDensityError) {
+  ParticleSystem ps(kR);
+  ParticleSet& fluid = addSet(ps, "fluid", SetKind::Fluid, {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()}, 0);
+  fluid.v() = {Vec3(1, 0, 0), Vec3(0, -2, 0), Vec3(0, 0, 3), Vec3(-1, 1, 0)};
+  fluid.addReal(field::density, Output) = {1000.0, 1010.0, 990.0, 1000.5};
+  const double m = 1000.0 * kV;
+  const FluidStatistics stats = fluidStatistics(fluid, 1000.0, kV);
+  EXPECT_EQ(stats.particles, 4u);
+  EXPECT_DOUBLE_EQ(stats.kineticEnergy, 0.5 * m * (1 + 4 + 9 + 2));
+  EXPECT_DOUBLE_EQ(stats.momentum.x(), 0.0);
+  EXPECT_DOUBLE_EQ(stats.momentum.y(), -1.0 * m);
+  EXPECT_DOUBLE_EQ(stats.momentum.z(), 3.0 * m);
+  EXPECT_NEAR(*stats.meanDensityError, (1.0 + 0.05) / 4, 1e-12); // 990 is expansion: no error
+  EXPECT_NEAR(*stats.maxDensityError, 1.0, 1e-12);
+}
+
+TEST(FluidStatistics, AnalyseUsesTheSetNamedFluid) {
+  ParticleSystem ps = syntheticSystem();
+  for (Vec3& v : ps[0].v()) v = Vec3(0, 2, 0);
+  const TimeRecord record = analyse(ps, syntheticSettings());
+  const double n = static_cast<double>(ps[0].size());
+  EXPECT_DOUBLE_EQ(record.fluid.kineticEnergy, 0.5 * 1000.0 * kV * 4 * n);
+  EXPECT_DOUBLE_EQ(record.fluid.momentum.y(), 1000.0 * kV * 2 * n);
+  EXPECT_DOUBLE_EQ(*record.fluid.maxDensityError, 0.0);
+}
+
+} // namespace
+} // namespace poro::test
