@@ -47,7 +47,11 @@ int Arguments::threads() const {
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used != text.size() || n < 1) throw InputError("option -threads expects a whole number >= 1, got '" + text + "'");
+  // The bound of solverDict's threads: far more threads than the OS grants a process crash OpenMP's start-up.
+  constexpr int maxThreads = 4096;
+  if (used != text.size() || n < 1 || n > maxThreads)
+    throw InputError("option -threads expects a whole number in [1, " + std::to_string(maxThreads) + "], got '" + text +
+                     "'");
   return n;
 }
 

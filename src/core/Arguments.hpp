@@ -28,7 +28,7 @@ public:
   std::string value(const std::string& name) const;
   /// The case directory (-case, default the current directory).
   std::string caseDir() const;
-  /// -threads N (0 when not given).
+  /// -threads N (0 when not given); N in [1, 4096], as solverDict's threads.
   int threads() const;
 
 private:

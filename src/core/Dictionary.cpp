@@ -9,7 +9,9 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -20,10 +22,13 @@ namespace poro {
 
 namespace {
 
-// Shortest text that reads back as the same double: "0.1", not "0.10000000000000001"; "100", not "1e+02".
+// Shortest text that reads back as the same double: "0.1", not "0.10000000000000001"; "100", not "1e+02";
+// whole numbers in plain digits ("1000000", not "1e+06"), as a user writes an iteration limit.
 std::string formatNumber(double v) {
   char buf[32];
-  const auto end = std::to_chars(buf, buf + sizeof buf, v).ptr;
+  const bool whole = v == std::floor(v) && std::fabs(v) < 1e15;
+  const auto end = whole ? std::to_chars(buf, buf + sizeof buf, static_cast<long long>(v)).ptr
+                         : std::to_chars(buf, buf + sizeof buf, v).ptr;
   return std::string(buf, end);
 }
 
@@ -72,6 +77,40 @@ bool isDecimal(const std::string& s, bool& integral) {
     integral = false;
   }
   return i == n;
+}
+
+// YAML text is UTF-8 without control characters other than tab and line breaks (YAML 1.2 §5.1). A binary file
+// (a .vtp or a core dump saved under a dictionary's name) would otherwise reach the user as yaml-cpp's
+// "unknown escape character" or as a key made of raw bytes. Returns the message for the first offending
+// byte ("line 3, column 7: byte 0x00"), or "".
+std::string firstNonTextByte(const std::string& text) {
+  int line = 1;
+  std::size_t lineStart = 0;
+  auto at = [&](std::size_t i, const std::string& what) {
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "0x%02X", static_cast<unsigned char>(text[i]));
+    return std::to_string(line) + ": byte " + hex + " at column " + std::to_string(i - lineStart + 1) + " " + what;
+  };
+  for (std::size_t i = 0; i < text.size();) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c == '\n') {
+      ++line;
+      lineStart = ++i;
+      continue;
+    }
+    if (c < 0x80) {
+      if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7F) return at(i, "is a control character");
+      ++i;
+      continue;
+    }
+    // Length of a UTF-8 sequence from its lead byte; continuation bytes are 10xxxxxx.
+    const std::size_t length = (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+    bool valid = length > 0 && i + length <= text.size();
+    for (std::size_t k = 1; valid && k < length; ++k) valid = (static_cast<unsigned char>(text[i + k]) >> 6) == 0x2;
+    if (!valid) return at(i, "is not valid UTF-8");
+    i += length;
+  }
+  return {};
 }
 
 std::string quoted(const std::string& s) {
@@ -308,7 +347,14 @@ Dictionary Dictionary::read(const std::string& path) {
   if (std::filesystem::is_directory(path, ec))
     throw InputError(path + ": cannot open file (it is a directory)");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open file");
+  if (!in) {
+    const int error = errno; // before the filesystem calls below can change it
+    // A missing system/ or constant/ is the likely cause: name the directory rather than only the file.
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    if (!parent.empty() && !std::filesystem::is_directory(parent, ec))
+      throw InputError(path + ": cannot open file: there is no directory " + parent.string());
+    throw InputError(path + ": cannot open file (" + std::strerror(error) + ")");
+  }
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError(path + ": cannot read file");
@@ -316,12 +362,20 @@ Dictionary Dictionary::read(const std::string& path) {
 }
 
 Dictionary Dictionary::parse(const std::string& text, const std::string& path) {
+  if (const std::string bad = firstNonTextByte(text); !bad.empty())
+    throw InputError(path + ":" + bad + "; expected a YAML text file (is this a binary file?)");
   std::vector<YAML::Node> docs;
   try {
     docs = YAML::LoadAll(text);
   } catch (const YAML::Exception& e) {
-    throw InputError(path + ":" + std::to_string(std::max(e.mark.line, 0) + 1) +
-                     ": malformed YAML: " + e.msg);
+    // An unclosed bracket or quote is found at the end of the input, which yaml-cpp marks as the line after
+    // the last one; name the last line and say why.
+    const int lines =
+        static_cast<int>(std::count(text.begin(), text.end(), '\n')) + (!text.empty() && text.back() != '\n' ? 1 : 0);
+    const int line = std::max(e.mark.line, 0) + 1;
+    const bool atEnd = line > lines || (e.mark.pos >= 0 && static_cast<std::size_t>(e.mark.pos) >= text.size());
+    throw InputError(path + ":" + std::to_string(std::max(1, std::min(line, lines))) + ": malformed YAML" +
+                     (atEnd ? " (at the end of the file)" : "") + ": " + e.msg);
   }
   // Only the first document would be read; a second one is almost surely a stray "---".
   for (std::size_t i = 1; i < docs.size(); ++i)

@@ -32,7 +32,8 @@ struct Range {
 /// One YAML mapping (a whole file or a sub-dictionary) and the file it came from.
 class Dictionary {
 public:
-  /// Reads and parses a YAML file whose top level must be a mapping. Missing or unreadable file,
+  /// Reads and parses a YAML file whose top level must be a mapping. Missing or unreadable file (with the
+  /// OS's reason, or the missing directory), bytes that are not UTF-8 text (binary files, with line and column),
   /// malformed YAML (with its line) and a non-mapping top level are InputErrors.
   static Dictionary read(const std::string& path);
   /// Parses YAML text as if it were the file `path` (tests, embedded defaults).

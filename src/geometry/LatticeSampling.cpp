@@ -1,5 +1,6 @@
 #include "geometry/LatticeSampling.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace poro {
@@ -10,6 +11,47 @@ long long latticeCount(double length, double spacing) {
   // A quotient within 1e-9 (relative) of a half-integer counts as that half-integer and rounds up.
   if (std::abs(quotient - (floorQ + 0.5)) <= 1e-9 * std::max(1.0, quotient)) return static_cast<long long>(floorQ) + 1;
   return static_cast<long long>(std::llround(quotient));
+}
+
+namespace {
+
+// Beyond 2^53 lattice points per axis a double no longer counts one by one; the estimate is all that matters.
+constexpr double kExactLimit = 9007199254740992.0;
+
+/// latticeCount without its integer conversion (which would overflow for absurd quotients).
+double axisCount(double length, double spacing) {
+  const double quotient = length / spacing;
+  if (!(quotient < kExactLimit)) return quotient; // also inf and NaN
+  return static_cast<double>(std::max(0LL, latticeCount(length, spacing)));
+}
+
+/// Inner coordinates of a container along one axis (the loop bound of sampleContainer).
+double innerCount(double length, double spacing) {
+  const double quotient = length / spacing;
+  if (!(quotient < kExactLimit)) return quotient;
+  return std::max(1.0, std::ceil(quotient - 1e-9));
+}
+
+} // namespace
+
+double boxPointCount(const Vec3& min, const Vec3& max, double particleRadius) {
+  const double spacing = 2.0 * particleRadius;
+  return axisCount(max.x() - min.x(), spacing) * axisCount(max.y() - min.y(), spacing) *
+         axisCount(max.z() - min.z(), spacing);
+}
+
+double containerPointCount(const Vec3& min, const Vec3& max, double particleRadius, int layers, const FaceFlags& open) {
+  const double spacing = 2.0 * particleRadius;
+  double inner[3], total[3];
+  for (int d = 0; d < 3; ++d) {
+    const int closed =
+        (open[static_cast<std::size_t>(2 * d)] ? 0 : 1) + (open[static_cast<std::size_t>(2 * d + 1)] ? 0 : 1);
+    inner[d] = innerCount(max[d] - min[d], spacing);
+    total[d] = inner[d] + static_cast<double>(closed * layers);
+  }
+  // All points minus the inner ones, as a sum of positive terms: a difference of two huge products would cancel.
+  return (total[0] - inner[0]) * total[1] * total[2] + inner[0] * (total[1] - inner[1]) * total[2] +
+         inner[0] * inner[1] * (total[2] - inner[2]);
 }
 
 std::vector<Vec3> sampleBox(const Vec3& min, const Vec3& max, double particleRadius) {

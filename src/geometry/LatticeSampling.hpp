@@ -25,4 +25,9 @@ using FaceFlags = std::array<bool, 6>;
 std::vector<Vec3> sampleContainer(const Vec3& min, const Vec3& max, double particleRadius, int layers,
                                   const FaceFlags& open);
 
+/// The number of points sampleBox and sampleContainer return, in floating point so that it neither overflows nor
+/// allocates: a radius far too small for the regions is refused before sampling (sampleParticles).
+double boxPointCount(const Vec3& min, const Vec3& max, double particleRadius);
+double containerPointCount(const Vec3& min, const Vec3& max, double particleRadius, int layers, const FaceFlags& open);
+
 } // namespace poro

@@ -6,6 +6,7 @@
 #include "io/TimeDirectory.hpp"
 
 #include <cmath>
+#include <cstdlib>
 
 namespace poro {
 
@@ -22,6 +23,26 @@ std::vector<PorousMaterial> readPorousMaterials(const fs::path& caseDir) {
   return PorousMaterial::readAll(Dictionary::read(path.string()));
 }
 
+namespace {
+
+/// A numeric directory without uniform/time, whose time `relevant` accepts: a time directory that lost its run
+/// state, which the run would otherwise silently pass over.
+template <class Relevant> void throwIfIncomplete(const fs::path& caseDir, const Relevant& relevant) {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(caseDir, ec)) {
+    const std::string name = entry.path().filename().string();
+    char* end = nullptr;
+    const double time = std::strtod(name.c_str(), &end);
+    if (!entry.is_directory() || name.empty() || *end != '\0' || !relevant(time) ||
+        fs::exists(entry.path() / "uniform" / "time"))
+      continue;
+    throw InputError((entry.path() / "uniform" / "time").string() + ": missing; time directory " + name +
+                     " is incomplete (restore it, or run sampleParticles again for 0/)");
+  }
+}
+
+} // namespace
+
 SimulationCase readCase(const fs::path& caseDir, int threads) {
   if (!fs::is_directory(caseDir)) throw InputError(caseDir.string() + ": case directory not found");
   const auto [control, output] = readControlDict(caseDir);
@@ -35,23 +56,31 @@ SimulationCase readCase(const fs::path& caseDir, int threads) {
   std::vector<PorousMaterial> materials = readPorousMaterials(caseDir);
   const double radius = readParticleRadius(caseDir);
 
+  const auto controlDictError = [&](const std::string& key, const std::string& message) {
+    Dictionary::read((caseDir / "system" / "controlDict").string()).fail(key, message); // for the line
+  };
   std::string startName;
   const auto times = listTimeDirectories(caseDir);
+  std::string names;
+  for (const auto& t : times) names += (names.empty() ? "" : ", ") + t.name;
+  const auto sameTime = [](double a, double b) { return std::abs(a - b) <= 1e-10 * std::max(1.0, std::abs(b)); };
   if (control.startFrom == TimeControl::StartFrom::LatestTime) {
+    throwIfIncomplete(caseDir, [&](double t) { return times.empty() || t > times.back().time; });
     if (times.empty()) throw InputError((caseDir / "0").string() + ": no time directory; run sampleParticles first");
     startName = times.back().name;
   } else {
     for (const auto& t : times)
-      if (std::abs(t.time - control.startTime) <= 1e-10 * std::max(1.0, control.startTime)) startName = t.name;
+      if (sameTime(t.time, control.startTime)) startName = t.name;
+    throwIfIncomplete(caseDir, [&](double t) { return startName.empty() && sameTime(t, control.startTime); });
     if (startName.empty())
-      throw InputError((caseDir / "system" / "controlDict").string() + ": no time directory for startTime " +
-                       timeName(control.startTime) + (times.empty() ? "; run sampleParticles first" : ""));
+      controlDictError("startTime", "no time directory " + timeName(control.startTime) +
+                                        (times.empty() ? "; run sampleParticles first"
+                                                       : "; the case has " + names + " (or use startFrom: latestTime)"));
   }
   RunState start = readRunState(caseDir / startName);
   ParticleSystem particles = readParticles(caseDir, startName, radius, materials);
   if (start.time >= control.endTime)
-    throw InputError((caseDir / "system" / "controlDict").string() + ": endTime " + timeName(control.endTime) +
-                     " is not after the start time " + startName);
+    controlDictError("endTime", "expected endTime > the start time " + startName + ", got " + timeName(control.endTime));
   return SimulationCase{control, output, solver, fluid, std::move(materials), startName, start, std::move(particles)};
 }
 

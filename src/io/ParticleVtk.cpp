@@ -9,6 +9,7 @@
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
+#include <vtkDataCompressor.h>
 #include <vtkDoubleArray.h>
 #include <vtkErrorCode.h>
 #include <vtkExecutive.h>
@@ -22,15 +23,22 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 #include <vtkTypeInt64Array.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLDataParser.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cfloat>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
-#include <algorithm>
+#include <fstream>
 #include <limits>
+#include <map>
+#include <new>
 #include <numeric>
 #include <string>
 #include <system_error>
@@ -404,6 +412,219 @@ void checkReadable(const fs::path& file) {
   ::close(fd);
 }
 
+/// The file's first and last bytes: an empty file, one that is not XML at all and one cut short (a full disk,
+/// a copy interrupted) get a message that says so instead of the XML parser's byte index.
+void checkEnds(const fs::path& file) {
+  const auto size = fs::file_size(file);
+  if (size == 0) throwInput(file, "not a readable VTK PolyData file: the file is empty");
+  std::ifstream in(file, std::ios::binary);
+  std::string head(static_cast<std::size_t>(std::min<std::uintmax_t>(size, 64)), '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  const std::size_t start = head.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0; // a UTF-8 byte-order mark
+  const std::size_t first = head.find_first_not_of(" \t\r\n", start);
+  if (first == std::string::npos || (head.compare(first, 5, "<?xml") != 0 && head.compare(first, 8, "<VTKFile") != 0))
+    throwInput(file, "not a readable VTK PolyData file: it does not start with <?xml or <VTKFile (not a VTK XML file)");
+  // The closing tag must be near the end; XML allows a trailing comment, so look at the last 4 KB, not the last bytes.
+  const std::uintmax_t tailSize = std::min<std::uintmax_t>(size, 4096);
+  std::string tail(static_cast<std::size_t>(tailSize), '\0');
+  in.seekg(static_cast<std::streamoff>(size - tailSize));
+  in.read(tail.data(), static_cast<std::streamsize>(tail.size()));
+  if (tail.find("</VTKFile>") == std::string::npos)
+    throwInput(file, "not a readable VTK PolyData file: it does not end with </VTKFile> (truncated?)");
+}
+
+/// One DataArray element of a piece (point data or the coordinates), as the XML header describes it.
+struct ArrayElement {
+  vtkTypeInt64 offset = 0;  ///< byte index of the element's '<'
+  std::string name;         ///< Name attribute; "Points" for the coordinates
+  bool coordinates = false; ///< the Points array
+  std::string type;         ///< type attribute: Float64, Int64, ...
+  bool ascii = false;       ///< format="ascii": the values are checked here, before VTK reads them
+  long long tuples = 0;     ///< NumberOfPoints of its piece
+  long long components = 1; ///< NumberOfComponents
+  int line = 0;             ///< 1-based line of the element, filled by scanArrays
+};
+
+bool isNumericType(const std::string& type) {
+  static const char* const names[] = {"Float32", "Float64", "Int8",   "UInt8", "Int16",
+                                      "UInt16",  "Int32",   "UInt32", "Int64", "UInt64"};
+  return std::find(std::begin(names), std::end(names), type) != std::end(names);
+}
+
+/// "array 'v'" or "array 'Points' of point coordinates".
+std::string describe(const ArrayElement& a) {
+  return "array '" + a.name + "'" + (a.coordinates ? " of point coordinates" : "");
+}
+
+/// A whole-number attribute of the XML header (`fallback` when absent).
+long long integerAttribute(const fs::path& file, vtkXMLDataElement* element, const char* name, long long fallback) {
+  const char* text = element->GetAttribute(name);
+  if (!text) return fallback;
+  errno = 0;
+  char* end = nullptr;
+  const long long value = std::strtoll(text, &end, 10);
+  if (end == text || *end != '\0' || errno == ERANGE)
+    throwInput(file, std::string(element->GetName()) + " attribute " + name + "=\"" + text +
+                         "\" is not a whole number that fits in 64 bits");
+  return value;
+}
+
+/// Every DataArray of every piece's PointData and Points. Refuses a point count that is negative or larger than
+/// the file could hold: VTK would allocate it before finding the data short.
+std::vector<ArrayElement> describeArrays(const fs::path& file, vtkXMLDataParser* parser) {
+  std::vector<ArrayElement> arrays;
+  vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
+  vtkXMLDataElement* poly = root ? root->FindNestedElementWithName("PolyData") : nullptr;
+  if (!poly) return arrays; // VTK has said what is wrong
+  const double size = static_cast<double>(fs::file_size(file));
+  for (int p = 0; p < poly->GetNumberOfNestedElements(); ++p) {
+    vtkXMLDataElement* piece = poly->GetNestedElement(p);
+    if (std::strcmp(piece->GetName(), "Piece") != 0) continue;
+    const long long n = integerAttribute(file, piece, "NumberOfPoints", 0);
+    if (n < 0) throwInput(file, "Piece NumberOfPoints=\"" + std::to_string(n) + "\" is negative");
+    // 24 bytes of coordinates per point, and zlib compresses by at most 1032:1.
+    if (24.0 * static_cast<double>(n) > 1032.0 * size + 1e6)
+      throwInput(file, "Piece NumberOfPoints=\"" + std::to_string(n) + "\" cannot be right for a file of " +
+                           std::to_string(static_cast<long long>(size)) +
+                           " bytes (the coordinates alone need 24 bytes per point, compressed at most 1032:1); "
+                           "the file is corrupt");
+    for (const char* group : {"PointData", "Points"}) {
+      vtkXMLDataElement* data = piece->FindNestedElementWithName(group);
+      for (int k = 0; data && k < data->GetNumberOfNestedElements(); ++k) {
+        vtkXMLDataElement* e = data->GetNestedElement(k);
+        if (std::strcmp(e->GetName(), "DataArray") != 0) continue;
+        ArrayElement a;
+        a.offset = e->GetXMLByteIndex();
+        a.coordinates = std::strcmp(group, "Points") == 0;
+        a.name = e->GetAttribute("Name") ? e->GetAttribute("Name") : "";
+        a.type = e->GetAttribute("type") ? e->GetAttribute("type") : "";
+        a.ascii = e->GetAttribute("format") && std::strcmp(e->GetAttribute("format"), "ascii") == 0 &&
+                  isNumericType(a.type); // String arrays are VTK's to read
+        a.tuples = n;
+        a.components = integerAttribute(file, e, "NumberOfComponents", 1);
+        if (a.components < 1 || a.components > 9)
+          throwInput(file,
+                     describe(a) + ": NumberOfComponents=\"" + std::to_string(a.components) + "\"; expected 1 to 9");
+        arrays.push_back(a);
+      }
+    }
+  }
+  return arrays;
+}
+
+/// Why `token` is not a value of VTK type `type`, or "" when it is one. Decimal numbers only, as VTK's ascii
+/// reader takes them; nan and inf are numbers here (the restart check below names them).
+std::string badValue(const std::string& token, const std::string& type) {
+  const bool floating = type == "Float32" || type == "Float64";
+  const char* text = token.c_str();
+  char* end = nullptr;
+  errno = 0;
+  if (floating) {
+    std::string word = token;
+    for (char& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (!word.empty() && (word[0] == '+' || word[0] == '-')) word.erase(0, 1);
+    if (word == "nan" || word == "inf" || word == "infinity") return {};
+    if (token.find_first_of("xXpP") != std::string::npos) return "is not a decimal number";
+    const double v = std::strtod(text, &end);
+    if (end == text || *end != '\0') return "is not a number";
+    if (errno == ERANGE && std::fabs(v) > 1.0) return "is out of the range of " + type;
+    if (type == "Float32" && std::fabs(v) > FLT_MAX) return "is out of the range of Float32";
+    return {};
+  }
+  if (token.find_first_not_of("+-0123456789") != std::string::npos ||
+      token.find_first_of("0123456789") == std::string::npos)
+    return "is not a whole number (the array is " + type + ")";
+  static const std::map<std::string, std::pair<long double, long double>> ranges = {
+      {"Int8", {-128.0L, 127.0L}},
+      {"UInt8", {0.0L, 255.0L}},
+      {"Int16", {-32768.0L, 32767.0L}},
+      {"UInt16", {0.0L, 65535.0L}},
+      {"Int32", {-2147483648.0L, 2147483647.0L}},
+      {"UInt32", {0.0L, 4294967295.0L}},
+      {"Int64", {-9223372036854775808.0L, 9223372036854775807.0L}},
+      {"UInt64", {0.0L, 18446744073709551615.0L}}};
+  const long double v = std::strtold(text, &end);
+  if (end == text || *end != '\0') return "is not a whole number (the array is " + type + ")";
+  const auto range = ranges.find(type);
+  if (range != ranges.end() && (v < range->second.first || v > range->second.second))
+    return "is out of the range of " + type;
+  return {};
+}
+
+/// One pass over the file: the line of every array element, and for ascii arrays the count and form of their values,
+/// so that a hand-edited file gets "file:line: array 'v' holds 8 values, expected 9" rather than VTK's "may be too
+/// short" (or nothing at all when an array is too long). Costs one more read of an ascii file; binary files are
+/// read only up to their last array element (VTK checks their block sizes).
+void scanArrays(const fs::path& file, std::vector<ArrayElement>& arrays) {
+  std::sort(arrays.begin(), arrays.end(),
+            [](const ArrayElement& a, const ArrayElement& b) { return a.offset < b.offset; });
+  std::ifstream in(file, std::ios::binary);
+  std::vector<char> buffer(1 << 16);
+  std::size_t used = 0, filled = 0;
+  vtkTypeInt64 position = 0;
+  int line = 1;
+  auto next = [&]() -> int {
+    if (used == filled) {
+      in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+      filled = static_cast<std::size_t>(in.gcount());
+      used = 0;
+      if (filled == 0) return EOF;
+    }
+    const char c = buffer[used++];
+    ++position;
+    if (c == '\n') ++line;
+    return static_cast<unsigned char>(c);
+  };
+  const std::string name = file.string();
+  for (ArrayElement& a : arrays) {
+    while (position < a.offset)
+      if (next() == EOF) return;
+    a.line = line;
+    if (!a.ascii) continue;
+    // The rest of the start tag (attribute values may hold '>'); a self-closing tag holds no values.
+    int c = 0, previous = 0;
+    char quote = 0;
+    while ((c = next()) != EOF) {
+      if (quote) {
+        if (c == quote) quote = 0;
+      } else if (c == '"' || c == '\'') {
+        quote = static_cast<char>(c);
+      } else if (c == '>') {
+        break;
+      }
+      previous = c;
+    }
+    const long long expected = a.tuples * a.components;
+    long long count = 0;
+    std::string token;
+    int tokenLine = line;
+    auto finish = [&] {
+      if (token.empty()) return;
+      if (const std::string why = badValue(token, a.type); !why.empty() && count < expected)
+        throw InputError(name + ":" + std::to_string(tokenLine) + ": " + describe(a) + ": value '" + token +
+                         "' (particle " + std::to_string(count / a.components) + ") " + why);
+      ++count;
+      token.clear();
+    };
+    if (previous != '/') {
+      while ((c = next()) != EOF && c != '<') {
+        if (std::isspace(c)) {
+          finish();
+        } else {
+          if (token.empty()) tokenLine = line;
+          if (token.size() < 40) token += static_cast<char>(c); // a runaway token is named by its start
+        }
+      }
+      finish();
+    }
+    if (count != expected)
+      throw InputError(name + ":" + std::to_string(a.line) + ": " + describe(a) + " holds " + std::to_string(count) +
+                       " values, expected " + std::to_string(expected) + " (NumberOfPoints " +
+                       std::to_string(a.tuples) + " times " + std::to_string(a.components) +
+                       (a.components == 1 ? " component)" : " components)"));
+  }
+}
+
 } // namespace
 
 void writeParticleSet(const ParticleSet& set, const fs::path& file, bool binary) {
@@ -436,8 +657,9 @@ void writeParticleSet(const ParticleSet& set, const fs::path& file, bool binary)
   commitTemporaryFile(temporary, file);
 }
 
-void readParticleSet(ParticleSet& set, const fs::path& file) {
+std::vector<std::string> readParticleSet(ParticleSet& set, const fs::path& file) {
   checkReadable(file);
+  checkEnds(file);
 
   VtkMessages messages; // declared before the reader so it outlives every callback
   vtkNew<vtkXMLPolyDataReader> reader;
@@ -446,13 +668,36 @@ void readParticleSet(ParticleSet& set, const fs::path& file) {
   reader->SetReaderErrorObserver(messages.command());
   reader->SetParserErrorObserver(messages.command());
   reader->SetFileName(file.c_str());
-  reader->Update();
+  auto failIfErrors = [&] {
+    if (messages.hasErrors())
+      throwInput(file, "not a readable VTK PolyData file (truncated or corrupt?): " + messages.firstError());
+  };
 
-  vtkPolyData* poly = reader->GetOutput();
-  if (messages.hasErrors() || !poly) {
-    throwInput(file, "not a readable VTK PolyData file (truncated or corrupt?)" +
-                         (messages.hasErrors() ? ": " + messages.firstError() : std::string()));
+  // The XML header first: sizes and ascii values are checked before VTK allocates and parses the arrays.
+  reader->UpdateInformation();
+  failIfErrors();
+  if (vtkXMLDataParser* parser = reader->GetXMLParser()) messages.observe(parser->GetCompressor()); // zlib errors
+  std::vector<ArrayElement> elements = describeArrays(file, reader->GetXMLParser());
+  scanArrays(file, elements);
+  std::map<std::string, std::string> at; // array name -> "file:line: "
+  for (const ArrayElement& e : elements)
+    at[e.coordinates ? std::string() : e.name] = file.string() + ":" + std::to_string(e.line) + ": ";
+  auto where = [&](const std::string& name) {
+    const auto it = at.find(name);
+    return it != at.end() ? it->second : file.string() + ": ";
+  };
+
+  try {
+    reader->Update();
+  } catch (const std::bad_alloc&) {
+    // A corrupt size in a binary block header: VTK allocates what it says before reading.
+    throwInput(file, "not a readable VTK PolyData file: a data block asks for more memory than there is (corrupt?)");
+  } catch (const std::length_error&) {
+    throwInput(file, "not a readable VTK PolyData file: a data block has an impossible size (corrupt?)");
   }
+  vtkPolyData* poly = reader->GetOutput();
+  failIfErrors();
+  if (!poly) throwInput(file, "not a readable VTK PolyData file (truncated or corrupt?)");
 
   const std::string kind = fieldString(poly->GetFieldData(), kindKey);
   if (!kind.empty() && kind != toString(set.kind()))
@@ -461,12 +706,13 @@ void readParticleSet(ParticleSet& set, const fs::path& file) {
   const vtkIdType n = poly->GetNumberOfPoints();
   vtkDataArray* coordinates = poly->GetPoints() ? poly->GetPoints()->GetData() : nullptr;
   if (n > 0 && (!coordinates || !isFloating(coordinates->GetDataType()) || coordinates->GetNumberOfComponents() != 3))
-    throwInput(file, "points are not 3-component floating-point coordinates");
+    throw InputError(where("") + "points are not 3-component floating-point coordinates");
   if (n > 0) {
     const auto* xInfo = set.info(field::x);
     if (xInfo && (xInfo->role & Restart) == Restart) {
       if (const vtkIdType bad = firstNonFinite(coordinates); bad >= 0)
-        throwInput(file, "point coordinates: particle " + std::to_string(bad) + " has a NaN or infinite value");
+        throw InputError(where("") + "point coordinates: particle " + std::to_string(bad) +
+                         " has a NaN or infinite value");
     }
   }
 
@@ -479,12 +725,14 @@ void readParticleSet(ParticleSet& set, const fs::path& file) {
       throwInput(file, "point-data array #" + std::to_string(k) + " has no name");
     const std::string name = abstract->GetName();
     const std::string quoted = "array '" + name + "'";
+    const std::string prefix = where(name);
     auto* array = vtkDataArray::SafeDownCast(abstract);
-    if (!array) throwInput(file, quoted + " is not numeric (" + abstract->GetClassName() + ")");
-    if (name == field::x) throwInput(file, quoted + " clashes with the point coordinates, which are field 'x'");
+    if (!array) throw InputError(prefix + quoted + " is not numeric (" + abstract->GetClassName() + ")");
+    if (name == field::x)
+      throw InputError(prefix + quoted + " clashes with the point coordinates, which are field 'x'");
     if (array->GetNumberOfTuples() != n)
-      throwInput(file, quoted + " has " + std::to_string(array->GetNumberOfTuples()) + " values, expected " +
-                           std::to_string(n) + " (one per point)");
+      throw InputError(prefix + quoted + " has " + std::to_string(array->GetNumberOfTuples()) + " values, expected " +
+                       std::to_string(n) + " (one per point)");
 
     const int components = array->GetNumberOfComponents();
     const int dataType = array->GetDataType();
@@ -494,22 +742,21 @@ void readParticleSet(ParticleSet& set, const fs::path& file) {
     else if (isFloating(dataType) && components == 3) type = FieldType::Vec3;
     else if (isFloating(dataType) && components == 9) type = FieldType::Mat3;
     else
-      throwInput(file, quoted + " has " + std::to_string(components) + " component(s) of type " +
-                           array->GetDataTypeAsString() +
-                           "; expected 1 integer or 1, 3 or 9 floating-point components");
+      throw InputError(prefix + quoted + " has " + std::to_string(components) + " component(s) of type " +
+                       array->GetDataTypeAsString() + "; expected 1 integer or 1, 3 or 9 floating-point components");
 
     const auto* existing = set.info(name);
     if (existing && existing->type != type)
-      throwInput(file, quoted + " holds " + typeName(type) + " values, but field '" + name + "' of set '" +
-                           set.name() + "' is " + typeName(existing->type));
+      throw InputError(prefix + quoted + " holds " + typeName(type) + " values, but field '" + name + "' of set '" +
+                       set.name() + "' is " + typeName(existing->type));
     if (type == FieldType::Int) {
       if (const vtkIdType bad = firstOutOfInt64(array); bad >= 0)
-        throwInput(file, quoted + ": particle " + std::to_string(bad) + " has a value beyond the Int64 range");
+        throw InputError(prefix + quoted + ": particle " + std::to_string(bad) + " has a value beyond the Int64 range");
     } else if (existing && (existing->role & Restart) == Restart) {
       // A restart field feeds the next step directly; NaN would only surface as a diverged solve.
       if (const vtkIdType bad = firstNonFinite(array); bad >= 0)
-        throwInput(file, quoted + ": particle " + std::to_string(bad) +
-                             " has a NaN or infinite value in a restart field");
+        throw InputError(prefix + quoted + ": particle " + std::to_string(bad) +
+                         " has a NaN or infinite value in a restart field");
     }
     transfers.push_back({array, name, type});
   }
@@ -518,7 +765,12 @@ void readParticleSet(ParticleSet& set, const fs::path& file) {
   set.resize(0);
   set.resize(static_cast<std::size_t>(n));
   if (n > 0) copyToDoubles(coordinates, set.x().front().data());
-  for (const auto& t : transfers) copyTo(set, t);
+  std::vector<std::string> names;
+  for (const auto& t : transfers) {
+    copyTo(set, t);
+    names.push_back(t.name);
+  }
+  return names;
 }
 
 } // namespace poro

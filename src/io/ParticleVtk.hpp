@@ -3,6 +3,8 @@
 /// (ARCHITECTURE.md "A case directory"). VTK itself stays inside ParticleVtk.cpp.
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace poro {
 
@@ -25,11 +27,15 @@ void writeParticleSet(const ParticleSet& set, const std::filesystem::path& file,
 /// into "x" and every point-data array into the field of the same name. Unknown arrays are registered
 /// with role Output: Int8..Int64/UInt* -> Int, 1/3/9-component Float32/Float64 -> Real/Vec3/Mat3 (9
 /// components row-major).
-/// Throws InputError, message starting with the file path, when the file is missing or not readable
-/// PolyData (truncated, corrupt), an array does not match the type of an existing field, has another
-/// length than the point count or an unsupported type, a Restart field holds NaN or inf (names the
-/// array and first particle), or the file's "kind" differs from the set's kind. The set is left
-/// unchanged when validation fails.
-void readParticleSet(ParticleSet& set, const std::filesystem::path& file);
+/// Returns the names of the point-data arrays the file held (the points are always there as "x").
+/// Throws InputError, message starting with the file path (and the line of the array's element where one
+/// array is at fault), when the file is missing, empty, not VTK XML, cut short (no closing </VTKFile>) or not
+/// readable PolyData (corrupt), its NumberOfPoints is negative or more than its size can hold, an ascii array
+/// has more or fewer values than NumberOfPoints times its components or a value that is not a number of its
+/// type, an array does not match the type of an existing field or has an unsupported type, a Restart field
+/// holds NaN or inf (names the array and first particle), or the file's "kind" differs from the set's kind.
+/// The size check and the ascii checks run before VTK allocates anything. The set is left unchanged when
+/// validation fails.
+std::vector<std::string> readParticleSet(ParticleSet& set, const std::filesystem::path& file);
 
 } // namespace poro

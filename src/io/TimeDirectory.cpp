@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace poro {
@@ -78,12 +79,93 @@ std::vector<std::string> writeSets(const fs::path& dir, const ParticleSystem& pa
   return parts;
 }
 
-void writeRunState(const fs::path& dir, const RunState& state) {
+void writeRunState(const fs::path& dir, const RunState& state, double particleRadius) {
   std::ostringstream out;
   out << "# Run state of this time directory (restart: startFrom latestTime).\n"
       << "time: " << formatExact(state.time) << "\nstep: " << state.step
       << "\ndeltaT: " << formatExact(state.nextDeltaT) << "  # the step size of the coming step [s]\n";
+  // The radius the particles were sampled with, so that an edited particleDict cannot silently mismatch them.
+  if (particleRadius > 0.0)
+    out << "particleRadius: " << formatExact(particleRadius) << "  # [m], must equal system/particleDict's\n";
   writeFileAtomically(dir / "uniform" / "time", out.str());
+}
+
+const char* fileOfPhase(const std::string& phase) {
+  return phase == "fluid" ? "fluid.vtp" : phase == "porous" ? "porous.vtp" : "boundary.vtp";
+}
+
+/// The case's system/particleDict when it can be read, for cross-checks against the particle files (without it,
+/// e.g. in unit tests, the checks are skipped; sampleParticles and readCase report a broken one themselves).
+std::optional<Dictionary> readParticleDict(const fs::path& caseDir) {
+  const fs::path path = caseDir / "system" / "particleDict";
+  if (!fs::exists(path)) return std::nullopt;
+  try {
+    return Dictionary::read(path.string());
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+}
+
+/// particleDict's particleRadius must be the one the particles were sampled with (uniform/time records it):
+/// spacing, mass and kernel support follow from it, and a mismatch would run without any complaint.
+void checkRadius(const fs::path& dir, const std::optional<Dictionary>& particleDict, double particleRadius) {
+  const fs::path timeFile = dir / "uniform" / "time";
+  if (!fs::exists(timeFile)) return;
+  const Dictionary runState = Dictionary::read(timeFile.string());
+  if (!runState.has("particleRadius")) return; // written before the radius was recorded
+  const double sampled = runState.getReal("particleRadius", Range::positive());
+  if (std::abs(sampled - particleRadius) <= 1e-12 * sampled) return;
+  std::ostringstream msg;
+  msg << particleRadius << " differs from " << sampled << ", the radius the particles of " << dir.string()
+      << " were sampled with (" << runState.where("particleRadius")
+      << "); set particleRadius back, or run sampleParticles again (it rewrites 0/) and start from 0";
+  if (particleDict && particleDict->has("particleRadius")) particleDict->fail("particleRadius", msg.str());
+  throw InputError(dir.string() + ": particleRadius " + msg.str());
+}
+
+/// Every phase system/particleDict samples must have its file: a deleted boundary.vtp would otherwise run the
+/// fluid without walls, a deleted porous.vtp without its porous body.
+void checkPhasesPresent(const fs::path& caseDir, const fs::path& dir, const std::optional<Dictionary>& particleDict) {
+  if (!particleDict || !particleDict->has("regions")) return;
+  std::vector<Dictionary> regions;
+  try {
+    regions = particleDict->getDictList("regions");
+  } catch (const InputError&) {
+    return; // sampleParticles reports it
+  }
+  for (const Dictionary& region : regions) {
+    if (!region.has("phase") || !region.has("name")) continue;
+    std::string phase, name;
+    try {
+      phase = region.getString("phase");
+      name = region.getString("name");
+    } catch (const InputError&) {
+      continue;
+    }
+    if (phase != "fluid" && phase != "porous" && phase != "boundary") continue;
+    const std::string file = fileOfPhase(phase);
+    if (fs::exists(dir / file) || (phase == "boundary" && fs::exists(caseDir / "0" / file))) continue;
+    throw InputError((dir / file).string() + ": no such file, but " + region.where("phase") + " samples " + phase +
+                     " region '" + name + "'" +
+                     (dir.filename() == "0" ? "; run sampleParticles again (it writes 0/)"
+                                            : "; the time directory is incomplete: start from another one"));
+  }
+}
+
+/// Persistent ids are what restarts, the rest state and post-processing identify particles by (METHOD.md §4.1):
+/// the file must hold them and no two particles of one file may share one.
+void checkIds(const fs::path& file, const std::vector<std::string>& arrays, const std::vector<std::int64_t>& ids) {
+  if (!ids.empty() && std::find(arrays.begin(), arrays.end(), field::id) == arrays.end())
+    throw InputError(file.string() + ": no point-data array '" + field::id +
+                     "' (Int64, the persistent particle ids, unique within the file); sampleParticles writes it");
+  std::vector<std::pair<std::int64_t, std::size_t>> sorted(ids.size());
+  for (std::size_t i = 0; i < ids.size(); ++i) sorted[i] = {ids[i], i};
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t k = 1; k < sorted.size(); ++k)
+    if (sorted[k].first == sorted[k - 1].first)
+      throw InputError(file.string() + ": array '" + field::id + "': particles " +
+                       std::to_string(sorted[k - 1].second) + " and " + std::to_string(sorted[k].second) +
+                       " have the same id " + std::to_string(sorted[k].first) + "; ids must be unique within the file");
 }
 
 /// Writes into `.<name>.tmp` and renames it to `<name>` once every file is complete.
@@ -135,7 +217,14 @@ RunState readRunState(const fs::path& timeDir) {
   state.time = dict.getReal("time", Range::nonNegative());
   state.step = dict.getInt("step", Range::nonNegative());
   state.nextDeltaT = dict.getReal("deltaT", Range::nonNegative()); // 0: take controlDict deltaT
+  dict.getReal("particleRadius", 0.0, Range::positive());          // checked against particleDict by readParticles
   dict.checkUnknownKeys();
+  // The directory name is what startTime, latestTime and case.pvd go by; a run must not start elsewhere.
+  double named = 0.0;
+  const std::string name = timeDir.filename().string();
+  if (isTimeName(name, named) && std::abs(named - state.time) > 1e-10 * std::max(1.0, std::abs(named)))
+    dict.fail("time", "the time " + formatExact(state.time) + " differs from the directory name " + name +
+                          "; the directory of time t must be named t");
   return state;
 }
 
@@ -158,14 +247,20 @@ ParticleSystem readParticles(const fs::path& caseDir, const std::string& name, d
   // Fluid first, then porous sets in material order, boundaries last (ParticleSystem order, METHOD.md §1).
   auto rank = [](const fs::path& p) { return static_cast<int>(kindOfFile(p)); };
   std::sort(files.begin(), files.end(), [&](const fs::path& a, const fs::path& b) { return rank(a) < rank(b); });
+  const std::optional<Dictionary> particleDict = readParticleDict(caseDir);
+  checkRadius(dir, particleDict, particleRadius);
+  checkPhasesPresent(caseDir, dir, particleDict);
   ParticleSystem particles(particleRadius);
   for (const fs::path& file : files) {
     if (kindOfFile(file) == SetKind::Porous) {
       ParticleSet merged(kPorousSetName, SetKind::Porous);
-      readParticleSet(merged, file);
-      splitPorousSet(std::move(merged), materials, particles, file);
+      const auto arrays = readParticleSet(merged, file);
+      const std::vector<std::int64_t> ids = merged.integer(field::id);
+      splitPorousSet(std::move(merged), materials, particles, file); // first: its materialId message is clearer
+      checkIds(file, arrays, ids);
     } else {
-      readParticleSet(particles.add(file.stem().string(), kindOfFile(file)), file);
+      ParticleSet& set = particles.add(file.stem().string(), kindOfFile(file));
+      checkIds(file, readParticleSet(set, file), set.integer(field::id));
     }
   }
   if (!particles.find("fluid"))
@@ -186,6 +281,7 @@ TimeWriter::TimeWriter(fs::path caseDir, const OutputSettings& settings, const s
     }
   }
   series_.removeTimesAfter(start);
+  removeUnfinishedDirectories();
   for (const auto& entry : fs::directory_iterator(caseDir_ / startName))
     if (isParticleFile(entry.path()))
       series_.add(start, entry.path().stem().string(), startName + "/" + entry.path().filename().string());
@@ -198,11 +294,27 @@ void TimeWriter::write(const ParticleSystem& particles, const RunState& state) {
   std::vector<std::string> parts;
   writeDirectoryAtomically(caseDir_, name, [&](const fs::path& dir) {
     parts = writeSets(dir, particles, false, settings_.binary);
-    writeRunState(dir, state);
+    writeRunState(dir, state, particles.particleRadius());
   });
   for (const std::string& part : parts) series_.add(state.time, part, name + "/" + part + ".vtp");
   if (settings_.purgeWrite > 0) purge();
   series_.write(caseDir_ / kPvdName);
+}
+
+void TimeWriter::removeUnfinishedDirectories() {
+  std::vector<fs::path> unfinished; // `.<time>.tmp` of a run killed while writing
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(caseDir_, ec)) {
+    const std::string name = entry.path().filename().string();
+    double value = 0.0;
+    if (entry.is_directory() && name.size() > 5 && name.front() == '.' && name.substr(name.size() - 4) == ".tmp" &&
+        isTimeName(name.substr(1, name.size() - 5), value))
+      unfinished.push_back(entry.path());
+  }
+  for (const auto& path : unfinished) {
+    fs::remove_all(path, ec);
+    log::warning(path.string() + ": removed an unfinished time directory (a run was killed while writing it)");
+  }
 }
 
 void TimeWriter::purge() {
@@ -222,7 +334,7 @@ void TimeWriter::writeAll(const fs::path& caseDir, const ParticleSystem& particl
   std::vector<std::string> parts;
   writeDirectoryAtomically(caseDir, name, [&](const fs::path& dir) {
     parts = writeSets(dir, particles, true, binary);
-    writeRunState(dir, state);
+    writeRunState(dir, state, particles.particleRadius());
   });
   PvdSeries series;
   for (const std::string& part : parts) series.add(state.time, part, name + "/" + part + ".vtp");

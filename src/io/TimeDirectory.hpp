@@ -26,14 +26,18 @@ struct TimeDirectoryEntry {
 /// Complete time directories (those with uniform/time) of a case, by increasing time.
 std::vector<TimeDirectoryEntry> listTimeDirectories(const std::filesystem::path& caseDir);
 
-/// Reads `<dir>/uniform/time`.
+/// Reads `<dir>/uniform/time` (time, step, deltaT and, since it is recorded, particleRadius); a time that differs
+/// from the directory's name is an InputError.
 RunState readRunState(const std::filesystem::path& timeDir);
 
 /// Loads every particle set of a time directory: `fluid.vtp`, `porous.vtp` and `boundary.vtp` (or
 /// `0/boundary.vtp` when the directory has no boundary of its own), in ParticleSystem order. `fluid` and
 /// `boundary` name the fluid and wall sets; porous.vtp is split by its materialId into one set per material
 /// of `materials` (constant/porosityProperties order), named after the material (splitPorousSet). Any other
-/// .vtp file in the directory, a missing fluid.vtp and a porous.vtp the materials cannot split are InputErrors.
+/// .vtp file in the directory, a missing fluid.vtp and a porous.vtp the materials cannot split are InputErrors,
+/// and so are a file without the array 'id' or with two particles of the same id, a `particleRadius` other than
+/// the one uniform/time records, and, when the case has a readable system/particleDict, a missing file of a
+/// phase its regions sample (a deleted boundary.vtp or porous.vtp).
 ParticleSystem readParticles(const std::filesystem::path& caseDir, const std::string& timeName, double particleRadius,
                              const std::vector<PorousMaterial>& materials);
 
@@ -55,6 +59,7 @@ public:
 
 private:
   void purge();
+  void removeUnfinishedDirectories();
   std::filesystem::path caseDir_;
   OutputSettings settings_;
   PvdSeries series_;

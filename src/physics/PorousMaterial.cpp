@@ -51,7 +51,8 @@ std::pair<Vec3, Vec3> readFixedBox(const Dictionary& box) {
   for (int d = 0; d < 3; ++d)
     if (!(min[d] < max[d])) {
       std::ostringstream msg;
-      msg << "expected max > min on every axis, got min [" << min.transpose() << "], max [" << max.transpose() << "]";
+      msg << "expected max > min on every axis, got min [" << min.x() << ", " << min.y() << ", " << min.z()
+          << "], max [" << max.x() << ", " << max.y() << ", " << max.z() << "]";
       box.fail("max", msg.str());
     }
   return {min, max};

@@ -35,7 +35,9 @@ struct ParticleDict {
   std::vector<ParticleRegion> regions;
 
   /// Reads and validates every key. `materials` are those of constant/porosityProperties (empty when the case
-  /// has none): a porous region must name one of them.
+  /// has none): a porous region must name one of them. Before anything is sampled, it also refuses a region
+  /// that would hold no particle, a case without fluid region, and a particleRadius that would give a set more
+  /// particles than a 32-bit index counts or need more memory to sample than the machine has.
   static ParticleDict read(const Dictionary& dict, const std::vector<PorousMaterial>& materials);
 };
 

@@ -53,6 +53,7 @@ int main(int argc, char* argv[]) try {
     return 0;
   }
   const fs::path caseDir = args.caseDir();
+  if (!fs::is_directory(caseDir)) throw InputError(caseDir.string() + ": case directory not found");
   const std::string dictPath = (caseDir / "system" / "particleDict").string();
   const std::vector<PorousMaterial> materials = readPorousMaterials(caseDir);
   const ParticleDict dict = ParticleDict::read(Dictionary::read(dictPath), materials);
@@ -101,7 +102,6 @@ int main(int argc, char* argv[]) try {
     }
     log::info(line.str());
   }
-  if (fluid.size() == 0) throw InputError(dictPath + ": no fluid particles; add a region with phase fluid");
 
   fs::create_directories(caseDir);
   TimeWriter::writeAll(caseDir, particles, RunState{}, binary);

@@ -85,6 +85,7 @@ TEST(Range, Describe) {
   EXPECT_EQ((Range{0.0, 1.0, true, false}).describe(), "in (0, 1]");
   EXPECT_EQ((Range{std::nullopt, 0.1, false, true}).describe(), "< 0.1");
   EXPECT_EQ((Range{std::nullopt, 1e-6, false, false}).describe(), "<= 1e-06");
+  EXPECT_EQ(Range::closed(1, 1e6).describe(), "in [1, 1000000]"); // a limit of iterations reads as one
   EXPECT_EQ(Range::any().describe(), "finite");
 }
 
@@ -454,11 +455,20 @@ TEST(Dictionary, MalformedYamlReportsItsLine) {
 
   const std::string flow = errorOf([] { parse("a: 1\nb: *undefined\n"); });
   EXPECT_EQ(flow.rfind(kFile + ":2: malformed YAML: ", 0), 0u) << flow;
+
+  // yaml-cpp finds an unclosed bracket at the end of the input, one line past the last: name the last line.
+  EXPECT_EQ(errorOf([] { parse("a: 1\nb: [1, 2\n"); }),
+            kFile + ":2: malformed YAML (at the end of the file): end of sequence flow not found");
+  EXPECT_EQ(errorOf([] { parse("a: 1\nb: [1, 2"); }),
+            kFile + ":2: malformed YAML (at the end of the file): end of sequence flow not found");
 }
 
 TEST(Dictionary, MissingFile) {
   const std::string path = std::string(POROSPH_TEST_DATA) + "/dictionary/doesNotExist";
-  EXPECT_EQ(errorOf([&] { Dictionary::read(path); }), path + ": cannot open file");
+  EXPECT_EQ(errorOf([&] { Dictionary::read(path); }), path + ": cannot open file (No such file or directory)");
+  const std::string inMissingDir = std::string(POROSPH_TEST_DATA) + "/noSuchDirectory/controlDict";
+  EXPECT_EQ(errorOf([&] { Dictionary::read(inMissingDir); }),
+            inMissingDir + ": cannot open file: there is no directory " + POROSPH_TEST_DATA + "/noSuchDirectory");
   const std::string dir = std::string(POROSPH_TEST_DATA) + "/dictionary";
   EXPECT_EQ(errorOf([&] { Dictionary::read(dir); }), dir + ": cannot open file (it is a directory)");
 }
@@ -470,6 +480,16 @@ TEST(Dictionary, EmptyFile) {
               path + ":1: expected a YAML mapping of keys, but the file is empty");
   }
   EXPECT_EQ(errorOf([] { parse(""); }), kFile + ":1: expected a YAML mapping of keys, but the file is empty");
+}
+
+TEST(Dictionary, BinaryContentIsNamedWithLineAndColumn) {
+  EXPECT_EQ(errorOf([] { parse(std::string("a: 1\nb: 2\0\n", 11)); }),
+            kFile +
+                ":2: byte 0x00 at column 5 is a control character; expected a YAML text file (is this a binary file?)");
+  EXPECT_EQ(errorOf([] { parse("a: \xC3\x28\n"); }),
+            kFile + ":1: byte 0xC3 at column 4 is not valid UTF-8; expected a YAML text file (is this a binary file?)");
+  // Tabs, CR line ends and multi-byte UTF-8 (units, names) are text.
+  EXPECT_EQ(parse("a: 1\t# \xC2\xB5m, \xE2\x84\xAB\r\nb: 2\r\n").getInt("b"), 2);
 }
 
 TEST(Dictionary, TopLevelMustBeAMapping) {

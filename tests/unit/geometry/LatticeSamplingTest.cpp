@@ -217,5 +217,31 @@ TEST(SampleContainer, InnerBoxNotAMultipleOfTheSpacing) {
   EXPECT_GE(nearestDistance(full, walls), kR * (1.0 - 1e-9));
 }
 
+TEST(PointCount, EqualsTheNumberOfSampledPoints) {
+  const Vec3 min(-0.1, 0.0, -0.06);
+  for (const Vec3& extent : {Vec3(10.3, 10.7, 6.5), Vec3(4.0, 0.4, 2.5), Vec3(1.0, 1.0, 1.0), Vec3(0.2, 3.0, 2.0)}) {
+    const Vec3 max = min + kSpacing * extent;
+    EXPECT_EQ(boxPointCount(min, max, kR), static_cast<double>(sampleBox(min, max, kR).size())) << extent.transpose();
+    for (int layers : {1, 2, 3})
+      for (const FaceFlags& open : {FaceFlags{}, FaceFlags{false, false, false, true, false, false},
+                                    FaceFlags{true, false, false, true, false, true}})
+        EXPECT_EQ(containerPointCount(min, max, kR, layers, open),
+                  static_cast<double>(sampleContainer(min, max, kR, layers, open).size()))
+            << extent.transpose() << ", " << layers << " layers";
+  }
+  const FaceFlags allOpen = {true, true, true, true, true, true};
+  EXPECT_EQ(containerPointCount(min, min + Vec3::Ones(), kR, 2, allOpen), 0.0);
+}
+
+TEST(PointCount, AbsurdRadiiGiveHugeFiniteCountsWithoutSampling) {
+  // A metre cube at r = 1 nm: 1.25e26 points, far beyond what a long long counts by lattice rows.
+  const Vec3 min = Vec3::Zero(), max = Vec3::Ones();
+  EXPECT_NEAR(boxPointCount(min, max, 1e-9) / 1.25e26, 1.0, 1e-9);
+  const double walls = containerPointCount(min, max, 1e-9, 2, FaceFlags{});
+  EXPECT_NEAR(walls / (6 * 2 * 2.5e17), 1.0, 1e-6); // 2 layers on six faces of 5e8 x 5e8 points
+  EXPECT_EQ(boxPointCount(min, Vec3(1e300, 1.0, 1.0), 0.01), 0.5e302 * 50 * 50);
+  EXPECT_TRUE(std::isinf(boxPointCount(min, Vec3(1e300, 1e300, 1.0), 1e-9)));
+}
+
 } // namespace
 } // namespace poro

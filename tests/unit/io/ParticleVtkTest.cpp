@@ -324,9 +324,76 @@ TEST(ParticleVtk, ShortArrayIsAnInputErrorNamingTheArray) {
     readParticleSet(read, file);
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(file.string() + ": ", 0), 0u) << e.what();
-    EXPECT_TRUE(contains(e.what(), "shortPressure"));
+    EXPECT_EQ(std::string(e.what()), file.string() + ":6: array 'shortPressure' holds 2 values, expected 3 "
+                                                     "(NumberOfPoints 3 times 1 component)");
   }
+}
+
+/// The message of the InputError reading `vtp` gives, or "" (a test failure) if there is none.
+std::string readError(const ScratchDirectory& dir, const std::string& vtp) {
+  const auto file = dir / "hand.vtp";
+  test::writeAll(file, vtp);
+  ParticleSet read("fluid", SetKind::Fluid);
+  try {
+    readParticleSet(read, file);
+  } catch (const InputError& e) {
+    EXPECT_EQ(read.size(), 0u) << "a failed read must leave the set unchanged";
+    return std::string(e.what()).substr(file.string().size());
+  }
+  ADD_FAILURE() << "no InputError";
+  return "";
+}
+
+TEST(ParticleVtk, AsciiArraysAreCheckedValueByValueWithTheirLine) {
+  ScratchDirectory dir;
+  // Too long is as wrong as too short (VTK alone would read the first three values and drop the rest).
+  EXPECT_EQ(readError(dir, handWrittenVtp(R"(<DataArray type="Int64" Name="id" format="ascii">0 1 2 3</DataArray>)")),
+            ":6: array 'id' holds 4 values, expected 3 (NumberOfPoints 3 times 1 component)");
+  EXPECT_EQ(readError(dir, handWrittenVtp(R"(
+        <DataArray type="Float64" Name="v" NumberOfComponents="3" format="ascii">
+          0 0 0
+          0 abc 0
+          0 0 0
+        </DataArray>)")),
+            ":9: array 'v': value 'abc' (particle 1) is not a number");
+  EXPECT_EQ(
+      readError(dir, handWrittenVtp(R"(<DataArray type="Float64" Name="p" format="ascii">1 1e400 2</DataArray>)")),
+      ":6: array 'p': value '1e400' (particle 1) is out of the range of Float64");
+  EXPECT_EQ(readError(dir, handWrittenVtp(R"(<DataArray type="Float32" Name="p" format="ascii">1 2 1e39</DataArray>)")),
+            ":6: array 'p': value '1e39' (particle 2) is out of the range of Float32");
+  EXPECT_EQ(readError(dir, handWrittenVtp(R"(<DataArray type="Int32" Name="id" format="ascii">1 2.5 3</DataArray>)")),
+            ":6: array 'id': value '2.5' (particle 1) is not a whole number (the array is Int32)");
+  EXPECT_EQ(readError(dir, handWrittenVtp(R"(<DataArray type="UInt8" Name="flag" format="ascii">1 256 3</DataArray>)")),
+            ":6: array 'flag': value '256' (particle 1) is out of the range of UInt8");
+  // The coordinates: handWrittenVtp puts their DataArray on line 9.
+  std::string shortPoints = handWrittenVtp("");
+  shortPoints.replace(shortPoints.find("0 0 0 1 0 0 0 1 0"), 17, "0 0 0 1 0 0 0 1");
+  EXPECT_EQ(readError(dir, shortPoints), ":9: array 'Points' of point coordinates holds 8 values, expected 9 "
+                                         "(NumberOfPoints 3 times 3 components)");
+}
+
+TEST(ParticleVtk, ImpossiblePointCountsAreRefusedBeforeAllocating) {
+  ScratchDirectory dir;
+  std::string vtp = handWrittenVtp("");
+  const std::string three = "NumberOfPoints=\"3\"";
+  vtp.replace(vtp.find(three), three.size(), "NumberOfPoints=\"99999999999\"");
+  const std::string huge = readError(dir, vtp);
+  EXPECT_TRUE(contains(huge, ": Piece NumberOfPoints=\"99999999999\" cannot be right for a file of ")) << huge;
+  vtp.replace(vtp.find("99999999999"), 11, "-5");
+  EXPECT_EQ(readError(dir, vtp), ": Piece NumberOfPoints=\"-5\" is negative");
+}
+
+TEST(ParticleVtk, CorruptBinaryBlockIsAnInputError) {
+  // 0xFF over a compressed block header: VTK would try to allocate what the corrupt sizes say.
+  ScratchDirectory dir;
+  const auto file = dir / "fluid.vtp";
+  writeParticleSet(makeSet(500), file, true);
+  std::string bytes = readAll(file);
+  const std::size_t data = bytes.find("<AppendedData");
+  ASSERT_NE(data, std::string::npos);
+  for (std::size_t k = 0; k < 16; ++k) bytes[(data + bytes.size()) / 2 + k] = '\xFF';
+  const std::string message = readError(dir, bytes);
+  EXPECT_TRUE(contains(message, "not a readable VTK PolyData file")) << message;
 }
 
 TEST(ParticleVtk, TypeMismatchIsAnInputErrorNamingTheArray) {
