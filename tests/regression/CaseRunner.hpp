@@ -19,14 +19,24 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <utility>
 
 namespace poro::test {
+
+/// A case directory outside tutorials/ to copy (CaseRunner's second constructor).
+struct CaseSource {
+  std::filesystem::path dir;
+};
 
 class CaseRunner {
 public:
   /// Copies tutorials/<tutorial> to a fresh scratch directory named after the running test (or `name`
   /// outside a test, e.g. in SetUpTestSuite).
-  explicit CaseRunner(const std::string& tutorial, std::string name = "") {
+  explicit CaseRunner(const std::string& tutorial, std::string name = "")
+      : CaseRunner(CaseSource{std::filesystem::path(POROSPH_TUTORIALS) / tutorial}, std::move(name)) {}
+
+  /// Copies any case directory (e.g. the base of tests/data/bad) the same way.
+  explicit CaseRunner(const CaseSource& source, std::string name = "") {
     if (const auto* info = ::testing::UnitTest::GetInstance()->current_test_info())
       name = std::string(info->test_suite_name()) + "_" + info->name();
     for (char& c : name)
@@ -34,8 +44,7 @@ public:
     dir_ = std::filesystem::temp_directory_path() / ("porosph_" + name + "_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
-    std::filesystem::copy(std::filesystem::path(POROSPH_TUTORIALS) / tutorial, dir_,
-                          std::filesystem::copy_options::recursive);
+    std::filesystem::copy(source.dir, dir_, std::filesystem::copy_options::recursive);
   }
   ~CaseRunner() {
     if (!::testing::Test::HasFailure()) std::filesystem::remove_all(dir_); // keep a failed case to look at
@@ -68,10 +77,14 @@ public:
   }
   void write(const std::string& file, const std::string& text) const { std::ofstream(dir_ / file) << text; }
 
-  /// Runs an executable on the case with its output in log.<name>; returns its exit code.
-  int run(const std::string& executable, const std::string& arguments = "") const {
+  /// Runs an executable on the case with its output in log.<name>; returns its exit code. With
+  /// `timeoutSeconds` > 0 a run that takes longer is killed and returns 124 (coreutils timeout), so a hang
+  /// fails the test instead of stalling it.
+  int run(const std::string& executable, const std::string& arguments = "", int timeoutSeconds = 0) const {
     const std::string name = std::filesystem::path(executable).filename().string();
-    const std::string command = "'" + executable + "' -case '" + dir_.string() + "' " + arguments + " > '" +
+    const std::string timeout =
+        timeoutSeconds > 0 ? "timeout -k 5 " + std::to_string(timeoutSeconds) + " " : std::string();
+    const std::string command = timeout + "'" + executable + "' -case '" + dir_.string() + "' " + arguments + " > '" +
                                 (dir_ / ("log." + name)).string() + "' 2>&1";
     const int status = std::system(command.c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
