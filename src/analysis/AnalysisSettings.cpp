@@ -40,6 +40,7 @@ AnalysisSettings readAnalysisSettings(const fs::path& caseDir) {
   const FluidProperties fluid =
       FluidProperties::read(Dictionary::read((caseDir / "constant" / "fluidProperties").string()));
   settings.fluidDensity = fluid.density;
+  settings.gravity = fluid.gravity;
   settings.axis = Axis::up(fluid.gravity);
   settings.materials = readPorousMaterials(caseDir);
   return settings;

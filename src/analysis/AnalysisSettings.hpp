@@ -14,6 +14,7 @@ namespace poro {
 struct AnalysisSettings {
   double particleRadius = 0.0;           ///< r [m] (system/particleDict); particle volume V = (2r)^3
   double fluidDensity = 1000.0;          ///< rho0 [kg/m^3] (constant/fluidProperties density)
+  Vec3 gravity = Vec3(0.0, -9.81, 0.0);  ///< g [m/s^2] (constant/fluidProperties): potential energy
   std::vector<PorousMaterial> materials; ///< constant/porosityProperties, file order (porous sets are named so)
   std::vector<std::string> regionNames;  ///< names of system/particleDict's regions; index = objectId
   Axis axis;                             ///< fronts and profiles are measured along it (default: up)
@@ -23,7 +24,7 @@ struct AnalysisSettings {
 };
 
 /// Reads system/particleDict (particleRadius; region names, best effort: a region list it cannot read leaves
-/// objects named "object<k>"), constant/fluidProperties (density; the axis defaults to Axis::up of its gravity)
+/// objects named "object<k>"), constant/fluidProperties (density, gravity; the axis defaults to Axis::up of it)
 /// and constant/porosityProperties. Missing or invalid files are InputErrors naming the file.
 AnalysisSettings readAnalysisSettings(const std::filesystem::path& caseDir);
 

@@ -3,19 +3,30 @@
 #include "physics/FieldNames.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace poro {
 
-FluidStatistics fluidStatistics(const ParticleSet& fluid, double restDensity, double particleVolume) {
+FluidStatistics fluidStatistics(const ParticleSet& fluid, const AnalysisSettings& settings) {
   FluidStatistics stats;
   stats.particles = fluid.size();
-  const double mass = restDensity * particleVolume;
-  double twiceEnergy = 0.0;
-  for (const Vec3& v : fluid.v()) {
+  const double restDensity = settings.fluidDensity;
+  const double mass = restDensity * settings.particleVolume();
+  double twiceEnergy = 0.0, height = 0.0;
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    const Vec3& v = fluid.v()[i];
+    const Vec3& x = fluid.x()[i];
     twiceEnergy += v.squaredNorm();
     stats.momentum += v;
+    stats.maxSpeed = std::max(stats.maxSpeed, v.norm());
+    if (!x.allFinite()) continue; // cannot come from a readable file; kept out of the sums all the same
+    height -= settings.gravity.dot(x);
+    const double along = settings.axis.coordinate(x);
+    stats.minPosition = std::min(stats.minPosition.value_or(along), along);
+    stats.maxPosition = std::max(stats.maxPosition.value_or(along), along);
   }
   stats.kineticEnergy = 0.5 * mass * twiceEnergy;
+  stats.potentialEnergy = mass * height;
   stats.momentum *= mass;
   if (fluid.has(field::density)) {
     double sum = 0.0, largest = 0.0;

@@ -1,6 +1,7 @@
 #pragma once
-/// Whole-fluid quantities per time: density error, kinetic energy and momentum.
+/// Whole-fluid quantities per time: density error, energies, momentum, speed and extent along the axis.
 
+#include "analysis/AnalysisSettings.hpp"
 #include "sph/ParticleSet.hpp"
 
 #include <optional>
@@ -14,10 +15,17 @@ struct FluidStatistics {
   /// max(-r, 0)); the density deficit at a free surface is no error. Empty without a density field (0/).
   std::optional<double> meanDensityError, maxDensityError;
   double kineticEnergy = 0.0;   ///< sum 1/2 m |v|^2, m = rho0 V [J]
+  /// sum -m g.x [J], zero at the origin: differences over time are what count. Like the extent, over the
+  /// particles with a finite position.
+  double potentialEnergy = 0.0;
   Vec3 momentum = Vec3::Zero(); ///< sum m v [kg m/s]
+  double maxSpeed = 0.0;        ///< max |v| [m/s]
+  /// Lowest and highest particle centre along the analysis axis [m] (a surge front with -axis x, the free
+  /// surface of a pool with the default axis). Empty without fluid particles.
+  std::optional<double> minPosition, maxPosition;
 };
 
-/// `restDensity` rho0 [kg/m^3], `particleVolume` V = (2r)^3 [m^3].
-FluidStatistics fluidStatistics(const ParticleSet& fluid, double restDensity, double particleVolume);
+/// Uses settings.fluidDensity rho0, particleVolume() V, gravity g and axis.
+FluidStatistics fluidStatistics(const ParticleSet& fluid, const AnalysisSettings& settings);
 
 } // namespace poro

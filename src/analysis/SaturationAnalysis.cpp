@@ -31,7 +31,7 @@ TimeRecord analyse(const ParticleSystem& particles, const AnalysisSettings& sett
     record.objects.push_back(objectStatistics(particles, objects[k], absorbed[k], settings));
     record.profiles.push_back(saturationProfile(particles, objects[k], settings.axis, settings.particleRadius));
   }
-  if (fluid) record.fluid = fluidStatistics(*fluid, settings.fluidDensity, settings.particleVolume());
+  if (fluid) record.fluid = fluidStatistics(*fluid, settings);
   return record;
 }
 

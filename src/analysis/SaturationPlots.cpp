@@ -39,6 +39,35 @@ std::string fileStem(const std::string& name) {
   return stem;
 }
 
+/// Kinetic energy, potential energy relative to the first time with fluid, and their sum: the mechanical
+/// energy the flow has gained (> 0 would be spurious) or dissipated (< 0).
+SvgLinePlot energyPlot(const std::vector<TimeRecord>& records) {
+  std::optional<double> reference;
+  for (const TimeRecord& record : records)
+    if (!reference && record.fluid.particles > 0) reference = record.fluid.potentialEnergy;
+  const double base = reference.value_or(0.0);
+  SvgLinePlot energy("Fluid energy (potential relative to the first time)", "time [s]", "energy [J]");
+  energy.includeZeroY();
+  energy.add({"kinetic", fluidOverTime(records, [](auto& f) { return std::optional<double>(f.kineticEnergy); }),
+              false, 0});
+  energy.add({"potential change", fluidOverTime(records, [&](auto& f) {
+                return std::optional<double>(f.potentialEnergy - base);
+              }),
+              false, 1});
+  energy.add({"kinetic + potential change", fluidOverTime(records, [&](auto& f) {
+                return std::optional<double>(f.kineticEnergy + f.potentialEnergy - base);
+              }),
+              true, 2});
+  return energy;
+}
+
+SvgLinePlot extentPlot(const std::vector<TimeRecord>& records, const std::string& along) {
+  SvgLinePlot extent("Fluid extent (particle centres)", "time [s]", along);
+  extent.add({"highest", fluidOverTime(records, [](auto& f) { return f.maxPosition; }), false, 0});
+  extent.add({"lowest", fluidOverTime(records, [](auto& f) { return f.minPosition; }), true, 0});
+  return extent;
+}
+
 } // namespace
 
 std::vector<std::size_t> profileTimes(const std::vector<TimeRecord>& records, std::int64_t objectId) {
@@ -84,16 +113,12 @@ std::vector<std::pair<std::string, SvgLinePlot>> saturationPlots(const std::vect
   density.includeZeroY();
   density.add({"mean", fluidOverTime(records, [](auto& f) { return f.meanDensityError; }), false, 0});
   density.add({"max", fluidOverTime(records, [](auto& f) { return f.maxDensityError; }), true, 0});
-  SvgLinePlot energy("Fluid kinetic energy", "time [s]", "kinetic energy [J]");
-  energy.includeZeroY();
-  energy.add(
-      {"fluid", fluidOverTime(records, [](auto& f) { return std::optional<double>(f.kineticEnergy); }), false, 0});
-
-  std::vector<std::pair<std::string, SvgLinePlot>> plots = {{"absorbedVolume.svg", absorbed},
-                                                            {"fillFraction.svg", filling},
-                                                            {"wetFront.svg", front},
-                                                            {"densityError.svg", density},
-                                                            {"kineticEnergy.svg", energy}};
+  std::vector<std::pair<std::string, SvgLinePlot>> plots;
+  if (!objects.empty()) // a fluid-only case (a dam break) gets the fluid's plots only
+    plots = {{"absorbedVolume.svg", absorbed}, {"fillFraction.svg", filling}, {"wetFront.svg", front}};
+  plots.emplace_back("densityError.svg", density);
+  plots.emplace_back("energy.svg", energyPlot(records));
+  plots.emplace_back("fluidExtent.svg", extentPlot(records, along));
   for (const auto& [id, name] : objects) {
     const std::vector<std::size_t> times = profileTimes(records, id);
     if (times.empty()) continue;

@@ -11,9 +11,11 @@
 
 namespace poro {
 
-/// (file name, plot): absorbedVolume.svg (absorbed volume and pore volume phi V per object), fillFraction.svg
-/// (fraction filled and mean saturation), wetFront.svg (wetMin, wetMax), densityError.svg (mean and max),
-/// kineticEnergy.svg and, per object with saturation data, saturationProfiles_<object>.svg.
+/// (file name, plot): with porous objects absorbedVolume.svg (absorbed volume and pore volume phi V per
+/// object), fillFraction.svg (fraction filled and mean saturation), wetFront.svg (wetMin, wetMax); always
+/// densityError.svg (mean and max), energy.svg (kinetic, potential change and their sum) and fluidExtent.svg
+/// (lowest and highest fluid particle along the axis); per object with saturation data
+/// saturationProfiles_<object>.svg.
 std::vector<std::pair<std::string, SvgLinePlot>> saturationPlots(const std::vector<TimeRecord>& records,
                                                                  const AnalysisSettings& settings);
 

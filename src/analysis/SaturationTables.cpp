@@ -7,9 +7,10 @@ namespace {
 const char* const kObjectColumns[] = {"solidParticles", "absorbedParticles", "absorbedVolume_m3", "absorbedMass_kg",
                                       "poreVolume_m3",  "fractionFilled",    "meanSaturation",    "maxSaturation",
                                       "wetParticles",   "wetMin_m",          "wetMax_m",          "wetHeight_m"};
-const char* const kFluidColumns[] = {"particles",           "meanDensityError_percent", "maxDensityError_percent",
-                                     "kineticEnergy_J",     "momentumX_kg_m_per_s",     "momentumY_kg_m_per_s",
-                                     "momentumZ_kg_m_per_s"};
+const char* const kFluidColumns[] = {
+    "particles",            "meanDensityError_percent", "maxDensityError_percent", "kineticEnergy_J",
+    "momentumX_kg_m_per_s", "momentumY_kg_m_per_s",     "momentumZ_kg_m_per_s",    "potentialEnergy_J",
+    "maxSpeed_m_per_s",     "minPosition_m",            "maxPosition_m"};
 
 void addObject(CsvTable& table, const ObjectStatistics& o) {
   table.add(o.solidParticles).add(o.absorbedParticles).add(o.absorbedVolume).add(o.absorbedMass);
@@ -48,6 +49,7 @@ CsvTable timeSeriesTable(const std::vector<TimeRecord>& records) {
     const FluidStatistics& f = record.fluid;
     table.add(f.particles).add(f.meanDensityError).add(f.maxDensityError).add(f.kineticEnergy);
     table.add(f.momentum.x()).add(f.momentum.y()).add(f.momentum.z());
+    table.add(f.potentialEnergy).add(f.maxSpeed).add(f.minPosition).add(f.maxPosition);
   }
   return table;
 }

@@ -176,7 +176,7 @@ TEST(SaturationAnalysisCase, SyntheticCaseGivesExactVolumesSaturationsAndProfile
     EXPECT_EQ(profiles.number(k, "particles"), 16);
   }
   for (const char* plot : {"absorbedVolume.svg", "fillFraction.svg", "wetFront.svg", "densityError.svg",
-                           "kineticEnergy.svg", "saturationProfiles_block.svg"})
+                           "energy.svg", "fluidExtent.svg", "saturationProfiles_block.svg"})
     EXPECT_GT(fs::file_size(synthetic.dir() / kOutput / plot), 1000u) << plot;
 }
 

@@ -31,6 +31,10 @@ Definitions (r = particle radius, V = (2r)^3, rho0 = fluid density of constant/f
                   and max; compression only, as the pressure solver measures it (a free surface's density
                   deficit is no error)
   kinetic energy  sum 1/2 rho0 V |v|^2 [J]; momentum sum rho0 V v [kg m/s]
+  potential       sum -rho0 V g.x [J] (g of constant/fluidProperties), zero at the origin: only its change
+                  over time means something; energy.svg plots it relative to the first time
+  fluid extent    minPosition, maxPosition: the lowest and highest fluid particle centre along the axis
+                  (a surge front with -axis x, a pool's free surface with the default axis); maxSpeed = max |v|
 Time 0 of sampleParticles has no saturation or density yet: those cells stay empty.
 
 Output in <case>/postProcessing/saturationAnalysis/ (rewritten on every run, for the selected times):
@@ -38,10 +42,12 @@ Output in <case>/postProcessing/saturationAnalysis/ (rewritten on every run, for
                           .absorbedVolume_m3, .absorbedMass_kg, .poreVolume_m3, .fractionFilled,
                           .meanSaturation, .maxSaturation, .wetParticles, .wetMin_m, .wetMax_m, .wetHeight_m;
                           fluid.particles, .meanDensityError_percent, .maxDensityError_percent,
-                          .kineticEnergy_J, .momentumX_kg_m_per_s, .momentumY_kg_m_per_s, .momentumZ_kg_m_per_s
+                          .kineticEnergy_J, .momentumX_kg_m_per_s, .momentumY_kg_m_per_s, .momentumZ_kg_m_per_s,
+                          .potentialEnergy_J, .maxSpeed_m_per_s, .minPosition_m, .maxPosition_m
   saturationProfiles.csv  time_s, object, position_m, meanSaturation, particles
-  *.svg                   absorbedVolume, fillFraction, wetFront, densityError, kineticEnergy and
-                          saturationProfiles_<object> (up to six times, including the latest)
+  *.svg                   with porous objects: absorbedVolume, fillFraction, wetFront and per object
+                          saturationProfiles_<object> (up to six times, including the latest); always
+                          densityError, energy and fluidExtent
 Time directories that cannot be read (truncated .vtp, no uniform/time) are named in a warning and skipped;
 when none can be read, saturationAnalysis exits with status 1. -threads has no effect (the analysis is serial).
 )";

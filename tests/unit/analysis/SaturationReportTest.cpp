@@ -47,7 +47,8 @@ TEST(SaturationTables, TimeSeriesHasNamedColumnsWithUnits) {
             "object3.poreVolume_m3,object3.fractionFilled,object3.meanSaturation,object3.maxSaturation,"
             "object3.wetParticles,object3.wetMin_m,object3.wetMax_m,object3.wetHeight_m,"
             "fluid.particles,fluid.meanDensityError_percent,fluid.maxDensityError_percent,fluid.kineticEnergy_J,"
-            "fluid.momentumX_kg_m_per_s,fluid.momentumY_kg_m_per_s,fluid.momentumZ_kg_m_per_s");
+            "fluid.momentumX_kg_m_per_s,fluid.momentumY_kg_m_per_s,fluid.momentumZ_kg_m_per_s,"
+            "fluid.potentialEnergy_J,fluid.maxSpeed_m_per_s,fluid.minPosition_m,fluid.maxPosition_m");
   const double v = 8.0 * kR * kR * kR;
   const std::string volume = CsvTable::formatNumber(10 * v), pores = CsvTable::formatNumber(0.4 * 64 * v);
   // t = 0: no saturation and no density yet, so those cells are empty.
@@ -89,16 +90,26 @@ TEST(SaturationPlots, EveryPlotIsWellFormed) {
     EXPECT_TRUE(wellFormedXml(plot.svg())) << name;
   }
   EXPECT_EQ(names, (std::vector<std::string>{"absorbedVolume.svg", "fillFraction.svg", "wetFront.svg",
-                                             "densityError.svg", "kineticEnergy.svg", "saturationProfiles_block.svg",
-                                             "saturationProfiles_object3.svg"}));
+                                             "densityError.svg", "energy.svg", "fluidExtent.svg",
+                                             "saturationProfiles_block.svg", "saturationProfiles_object3.svg"}));
   EXPECT_EQ(plots[0].second.lines(), 4u); // absorbed and pore volume of two objects
-  EXPECT_EQ(plots[5].second.lines(), 2u); // profiles at 0.5 and 1
+  EXPECT_EQ(plots[4].second.lines(), 3u); // kinetic, potential change, their sum
+  EXPECT_EQ(plots[6].second.lines(), 2u); // profiles at 0.5 and 1
+}
+
+TEST(SaturationPlots, AFluidOnlyCaseGetsTheFluidPlotsOnly) {
+  ParticleSystem ps(kR);
+  addSet(ps, "fluid", SetKind::Fluid, lattice(2, Vec3::Zero()), 0);
+  const auto plots = saturationPlots({analyse(ps, syntheticSettings())}, syntheticSettings());
+  std::vector<std::string> names;
+  for (const auto& [name, plot] : plots) names.push_back(name);
+  EXPECT_EQ(names, (std::vector<std::string>{"densityError.svg", "energy.svg", "fluidExtent.svg"}));
 }
 
 TEST(SaturationReport, WritesTheFilesIntoTheDirectory) {
   ScratchDirectory dir;
   const auto files = writeSaturationReport(records(), syntheticSettings(), dir / "postProcessing" / "sa");
-  ASSERT_EQ(files.size(), 9u);
+  ASSERT_EQ(files.size(), 10u);
   for (const auto& file : files) EXPECT_TRUE(std::filesystem::is_regular_file(file)) << file;
   EXPECT_EQ(readAll(files[0]), timeSeriesTable(records()).text());
 }

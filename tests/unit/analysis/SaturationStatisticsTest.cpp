@@ -161,14 +161,43 @@ TEST(FluidStatistics, KineticEnergyMomentumAndCompressionOnlyDensityError) {
   fluid.v() = {Vec3(1, 0, 0), Vec3(0, -2, 0), Vec3(0, 0, 3), Vec3(-1, 1, 0)};
   fluid.addReal(field::density, Output) = {1000.0, 1010.0, 990.0, 1000.5};
   const double m = 1000.0 * kV;
-  const FluidStatistics stats = fluidStatistics(fluid, 1000.0, kV);
+  const FluidStatistics stats = fluidStatistics(fluid, syntheticSettings());
   EXPECT_EQ(stats.particles, 4u);
   EXPECT_DOUBLE_EQ(stats.kineticEnergy, 0.5 * m * (1 + 4 + 9 + 2));
   EXPECT_DOUBLE_EQ(stats.momentum.x(), 0.0);
   EXPECT_DOUBLE_EQ(stats.momentum.y(), -1.0 * m);
   EXPECT_DOUBLE_EQ(stats.momentum.z(), 3.0 * m);
+  EXPECT_DOUBLE_EQ(stats.maxSpeed, 3.0);
   EXPECT_NEAR(*stats.meanDensityError, (1.0 + 0.05) / 4, 1e-12); // 990 is expansion: no error
   EXPECT_NEAR(*stats.maxDensityError, 1.0, 1e-12);
+}
+
+TEST(FluidStatistics, PotentialEnergyAndExtentFollowGravityAndTheAxis) {
+  // A column of three particles at heights 0.1, 0.2, 0.4 m along y and spread along x; gravity tilted so
+  // that g.x mixes both components.
+  ParticleSystem ps(kR);
+  ParticleSet& fluid =
+      addSet(ps, "fluid", SetKind::Fluid, {Vec3(0.3, 0.1, 0), Vec3(-0.2, 0.2, 5), Vec3(0.0, 0.4, -5)}, 0);
+  AnalysisSettings settings = syntheticSettings();
+  settings.gravity = Vec3(1.0, -10.0, 0.0);
+  const double m = 1000.0 * kV;
+  FluidStatistics stats = fluidStatistics(fluid, settings);
+  EXPECT_NEAR(stats.potentialEnergy, m * (10.0 * 0.7 - 0.1), 1e-15); // -m g.x summed
+  EXPECT_DOUBLE_EQ(*stats.minPosition, 0.1);                         // default axis +y
+  EXPECT_DOUBLE_EQ(*stats.maxPosition, 0.4);
+  settings.axis = Axis::parse("-x");
+  stats = fluidStatistics(fluid, settings);
+  EXPECT_DOUBLE_EQ(*stats.minPosition, -0.3);
+  EXPECT_DOUBLE_EQ(*stats.maxPosition, 0.2);
+  // Lifting every particle by h raises the potential energy by M |g_y| h exactly.
+  for (Vec3& x : fluid.x()) x.y() += 0.5;
+  EXPECT_NEAR(fluidStatistics(fluid, settings).potentialEnergy - stats.potentialEnergy, 3 * m * 10.0 * 0.5, 1e-15);
+  // No fluid: no extent.
+  ParticleSystem empty(kR);
+  const FluidStatistics none = fluidStatistics(addSet(empty, "fluid", SetKind::Fluid, {}, 0), settings);
+  EXPECT_FALSE(none.minPosition.has_value());
+  EXPECT_FALSE(none.maxPosition.has_value());
+  EXPECT_EQ(none.potentialEnergy, 0.0);
 }
 
 TEST(FluidStatistics, AnalyseUsesTheSetNamedFluid) {
