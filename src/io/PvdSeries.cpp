@@ -120,18 +120,29 @@ void PvdSeries::removeTime(const std::string& timeName) {
 }
 
 void PvdSeries::write(const fs::path& path) const {
-  std::vector<std::string> parts; // index = pvd part number, in order of first appearance
+  // Parts in order of first appearance (their pvd part index) and, per part, its entries by time: a part
+  // without an entry at some time shows its latest earlier file there.
+  std::vector<std::string> parts;
+  std::vector<double> times; // in order of first appearance
+  std::map<std::string, std::map<double, std::string>> filesOf;
+  for (const auto& entry : entries_) {
+    if (std::find(parts.begin(), parts.end(), entry.part) == parts.end()) parts.push_back(entry.part);
+    if (std::find(times.begin(), times.end(), entry.time) == times.end()) times.push_back(entry.time);
+    filesOf[entry.part][entry.time] = entry.file;
+  }
   std::ostringstream out;
   out << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"Collection\" version=\"0.1\">\n"
       << "  <Collection>\n";
-  for (const auto& entry : entries_) {
-    auto found = std::find(parts.begin(), parts.end(), entry.part);
-    const auto index = static_cast<std::size_t>(found - parts.begin());
-    if (found == parts.end()) parts.push_back(entry.part);
-    out << "    <DataSet timestep=\"" << formatTime(entry.time) << "\" group=\"\" part=\"" << index << "\" file=\""
-        << escapeXml(entry.file) << "\"/>\n";
-  }
+  for (const double time : times)
+    for (std::size_t index = 0; index < parts.size(); ++index) {
+      const auto& files = filesOf[parts[index]];
+      auto latest = files.upper_bound(time);
+      if (latest == files.begin()) continue; // the part does not exist yet
+      --latest;
+      out << "    <DataSet timestep=\"" << formatTime(time) << "\" group=\"\" part=\"" << index << "\" name=\""
+          << escapeXml(parts[index]) << "\" file=\"" << escapeXml(latest->second) << "\"/>\n";
+    }
   out << "  </Collection>\n"
       << "</VTKFile>\n";
   writeFileAtomically(path, out.str());
@@ -183,7 +194,11 @@ PvdSeries PvdSeries::read(const fs::path& path) {
     const auto parsed = std::from_chars(value.data(), value.data() + value.size(), time);
     if (parsed.ec != std::errc() || parsed.ptr != value.data() + value.size())
       fail(at, "timestep \"" + value + "\" is not a number");
-    series.entries_.push_back({time, fs::path(file->second).stem().string(), file->second});
+    const std::string part = fs::path(file->second).stem().string();
+    // A file already listed for this part is write()'s repetition of a static set at a later time.
+    const bool repeated = std::any_of(series.entries_.begin(), series.entries_.end(),
+                                      [&](const Entry& e) { return e.part == part && e.file == file->second; });
+    if (!repeated) series.entries_.push_back({time, part, file->second});
   }
   return series;
 }

@@ -30,13 +30,17 @@ public:
   /// Drops the entries whose file lies in the time directory `timeName` (e.g. "0.1"; purgeWrite).
   void removeTime(const std::string& timeName);
 
-  /// Writes the collection atomically (writeFileAtomically): `<DataSet timestep=".." group="" part="k"
-  /// file=".."/>` per entry, times with 17 significant digits, part indices 0, 1, ... in order of first
-  /// appearance of each part name. Throws OutputError.
+  /// Writes the collection atomically (writeFileAtomically): per time (in order of first appearance) one
+  /// `<DataSet timestep=".." group="" part="k" name="<part>" file=".."/>` per part, times with 17 significant
+  /// digits, part indices 0, 1, ... in order of first appearance of each part name. A part without an entry
+  /// at a time (a static set such as the boundary, written once at time 0) is listed there with its latest
+  /// earlier file: ParaView's reader shows only the files of the current time, so every set stays visible
+  /// and keeps its block index and name. Throws OutputError.
   void write(const std::filesystem::path& path) const;
 
   /// Reads a collection written by write() (or by ParaView): the DataSet elements' timestep and file
-  /// attributes; the part name is the file's stem ("0.1/fluid.vtp" -> "fluid"). Throws InputError
+  /// attributes; the part name is the file's stem ("0.1/fluid.vtp" -> "fluid"). A file listed again for
+  /// the same part (write()'s repetition of a static set) is read once, at its first time. Throws InputError
   /// ("path:line: ...") for a missing file, a file that is not a collection or an unreadable DataSet.
   static PvdSeries read(const std::filesystem::path& path);
 

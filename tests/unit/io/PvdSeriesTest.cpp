@@ -27,13 +27,54 @@ TEST(PvdSeries, WritesAParaViewCollection) {
   threeTimes().write(dir / "case.pvd");
   const std::string text = readAll(dir / "case.pvd");
   EXPECT_TRUE(contains(text, "<VTKFile type=\"Collection\" version=\"0.1\">"));
-  EXPECT_TRUE(contains(text, "<DataSet timestep=\"0\" group=\"\" part=\"0\" file=\"0/fluid.vtp\"/>"));
-  EXPECT_TRUE(contains(text, "<DataSet timestep=\"0\" group=\"\" part=\"1\" file=\"0/boundary.vtp\"/>"));
+  EXPECT_TRUE(contains(text, "<DataSet timestep=\"0\" group=\"\" part=\"0\" name=\"fluid\" file=\"0/fluid.vtp\"/>"));
+  EXPECT_TRUE(
+      contains(text, "<DataSet timestep=\"0\" group=\"\" part=\"1\" name=\"boundary\" file=\"0/boundary.vtp\"/>"));
   // 17 significant digits: the time reads back as the same double.
-  EXPECT_TRUE(contains(
-      text, "<DataSet timestep=\"0.10000000000000001\" group=\"\" part=\"0\" file=\"0.1/fluid.vtp\"/>"));
+  EXPECT_TRUE(contains(text, "<DataSet timestep=\"0.10000000000000001\" group=\"\" part=\"0\" name=\"fluid\" "
+                             "file=\"0.1/fluid.vtp\"/>"));
   EXPECT_TRUE(contains(text, "</Collection>\n</VTKFile>\n"));
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"case.pvd"});
+}
+
+TEST(PvdSeries, AStaticSetIsListedAtEveryTime) {
+  // The boundary is written once, at 0. ParaView's reader restricts a collection to the DataSets of the
+  // current timestep, so the boundary must be listed at every time, with the same part index and name.
+  ScratchDirectory dir;
+  PvdSeries series;
+  series.add(0.0, "fluid", "0/fluid.vtp");
+  series.add(0.0, "boundary", "0/boundary.vtp");
+  series.add(0.0, "porous", "0/porous.vtp");
+  for (const char* name : {"0.5", "1"}) {
+    series.add(std::stod(name), "fluid", std::string(name) + "/fluid.vtp");
+    series.add(std::stod(name), "porous", std::string(name) + "/porous.vtp");
+  }
+  series.write(dir / "case.pvd");
+  const std::string text = readAll(dir / "case.pvd");
+  EXPECT_EQ(text, "<?xml version=\"1.0\"?>\n"
+                  "<VTKFile type=\"Collection\" version=\"0.1\">\n"
+                  "  <Collection>\n"
+                  "    <DataSet timestep=\"0\" group=\"\" part=\"0\" name=\"fluid\" file=\"0/fluid.vtp\"/>\n"
+                  "    <DataSet timestep=\"0\" group=\"\" part=\"1\" name=\"boundary\" file=\"0/boundary.vtp\"/>\n"
+                  "    <DataSet timestep=\"0\" group=\"\" part=\"2\" name=\"porous\" file=\"0/porous.vtp\"/>\n"
+                  "    <DataSet timestep=\"0.5\" group=\"\" part=\"0\" name=\"fluid\" file=\"0.5/fluid.vtp\"/>\n"
+                  "    <DataSet timestep=\"0.5\" group=\"\" part=\"1\" name=\"boundary\" file=\"0/boundary.vtp\"/>\n"
+                  "    <DataSet timestep=\"0.5\" group=\"\" part=\"2\" name=\"porous\" file=\"0.5/porous.vtp\"/>\n"
+                  "    <DataSet timestep=\"1\" group=\"\" part=\"0\" name=\"fluid\" file=\"1/fluid.vtp\"/>\n"
+                  "    <DataSet timestep=\"1\" group=\"\" part=\"1\" name=\"boundary\" file=\"0/boundary.vtp\"/>\n"
+                  "    <DataSet timestep=\"1\" group=\"\" part=\"2\" name=\"porous\" file=\"1/porous.vtp\"/>\n"
+                  "  </Collection>\n"
+                  "</VTKFile>\n");
+  // Read back (a restart), the repetitions are not entries of their own, and the file is written the same.
+  const PvdSeries read = PvdSeries::read(dir / "case.pvd");
+  EXPECT_EQ(read.entries().size(), series.entries().size());
+  read.write(dir / "again.pvd");
+  EXPECT_EQ(readAll(dir / "again.pvd"), text);
+  // Purging time 0 removes the boundary's file, so it is listed nowhere.
+  PvdSeries purged = read;
+  purged.removeTime("0");
+  purged.write(dir / "purged.pvd");
+  EXPECT_FALSE(contains(readAll(dir / "purged.pvd"), "boundary"));
 }
 
 TEST(PvdSeries, ReadReturnsWhatWasWritten) {
