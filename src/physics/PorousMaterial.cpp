@@ -14,10 +14,6 @@ namespace {
 /// Names that already mean a particle set and a file of a time directory (fluid.vtp, boundary.vtp).
 const char* const kReservedNames[] = {"fluid", "boundary"};
 
-const char* const kUnsupported =
-    " is not supported by this version of poroSph (elastic solids and capillary adhesion are not implemented "
-    "yet); remove the key or set it to 0";
-
 bool isIdentifier(const std::string& name) {
   if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_')) return false;
   return std::all_of(name.begin(), name.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
@@ -31,17 +27,6 @@ void checkName(const Dictionary& dict, const std::string& name) {
     if (name == reserved)
       dict.fail(name, "'" + name + "' cannot name a porous material: it is the name of the " + name +
                           " particle set (choose another name, e.g. sand)");
-}
-
-/// A key of a term this version does not implement: accepted only with its "off" value 0.
-double readUnsupported(const Dictionary& m, const std::string& key, const Range& range) {
-  const double value = m.getReal(key, 0.0, range);
-  if (value != 0.0) {
-    std::ostringstream msg;
-    msg << "a non-zero " << key << " (got " << value << ")" << kUnsupported;
-    m.fail(key, msg.str());
-  }
-  return value;
 }
 
 std::pair<Vec3, Vec3> readFixedBox(const Dictionary& box) {
@@ -68,15 +53,16 @@ PorousMaterial readMaterial(const std::string& name, const Dictionary& m) {
   const double bulk = m.getReal("bulkDensity", 0.0, Range::positive());
   p.compressible = m.getBool("compressible", p.compressible);
   p.dragViscosity = m.getReal("dragViscosity", p.dragViscosity, Range::nonNegative());
-  p.youngsModulus = readUnsupported(m, "youngsModulus", Range::nonNegative());
+  p.youngsModulus = m.getReal("youngsModulus", p.youngsModulus, Range::nonNegative());
   p.poissonsRatio = m.getReal("poissonsRatio", p.poissonsRatio, Range::open(-1.0, 0.5));
-  p.capillaryStrength = readUnsupported(m, "capillaryStrength", Range::nonNegative());
+  p.capillaryStrength = m.getReal("capillaryStrength", p.capillaryStrength, Range::nonNegative());
   p.capillaryFalloff = m.getReal("capillaryFalloff", p.capillaryFalloff, Range::closed(0.0, 1.0));
-  p.bloating = readUnsupported(m, "bloating", Range::any());
-  p.shearSoftening = readUnsupported(m, "shearSoftening", Range::any());
-  p.volumeSoftening = readUnsupported(m, "volumeSoftening", Range::any());
-  p.dampingViscosity = readUnsupported(m, "dampingViscosity", Range::nonNegative());
-  p.boundaryDampingViscosity = readUnsupported(m, "boundaryDampingViscosity", Range::nonNegative());
+  p.bloating = m.getReal("bloating", p.bloating, Range::any());
+  p.shearSoftening = m.getReal("shearSoftening", p.shearSoftening, Range::any());
+  p.volumeSoftening = m.getReal("volumeSoftening", p.volumeSoftening, Range::any());
+  p.dampingViscosity = m.getReal("dampingViscosity", p.dampingViscosity, Range::nonNegative());
+  p.boundaryDampingViscosity =
+      m.getReal("boundaryDampingViscosity", p.boundaryDampingViscosity, Range::nonNegative());
   if (const auto box = m.optionalSubDict("fixedBox")) p.fixedBox = readFixedBox(*box);
   // Before the density checks: a misspelt "solidDensty" gets its "did you mean" rather than "missing".
   m.checkUnknownKeys();

@@ -119,7 +119,7 @@ void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
 
 StepContext Solver::context(double deltaT) {
   return StepContext{particles_, search_,      gradients_,    kernel_,      fluid_,
-                     deltaT,     dynamicSets_, boundarySets_, setMaterials_};
+                     deltaT,     dynamicSets_, boundarySets_, setMaterials_, settings_.compatibility};
 }
 
 void Solver::searchNeighbours() {

@@ -16,7 +16,36 @@ HealthAction readAction(const Dictionary& dict, const std::string& key, const st
   return word == "warn" ? HealthAction::Warn : word == "remove" ? HealthAction::Remove : HealthAction::Stop;
 }
 
+/// Reads one switch: `paperWord` (the default of the preset) or `referenceWord`.
+bool readSwitch(const Dictionary& dict, const std::string& key, const std::string& paperWord,
+                const std::string& referenceWord, bool fallback) {
+  return dict.getWord(key, {paperWord, referenceWord}, fallback ? referenceWord : paperWord) == referenceWord;
+}
+
+CompatibilitySettings readCompatibility(const Dictionary& c) {
+  const bool reference = c.getWord("preset", {"paper", "reference"}, "paper") == "reference";
+  CompatibilitySettings s = reference ? CompatibilitySettings::reference() : CompatibilitySettings{};
+  s.unitLambdaVolumetricStress =
+      readSwitch(c, "volumetricStress", "lambda", "unitLambda", s.unitLambdaVolumetricStress);
+  s.lambdaScaledBloating = readSwitch(c, "bloatingStress", "absolute", "lambdaScaled", s.lambdaScaledBloating);
+  s.deltaTScaledInitialGuess =
+      readSwitch(c, "implicitInitialGuess", "deltaV", "deltaTDeltaV", s.deltaTScaledInitialGuess);
+  s.restCouplingSolidDensity =
+      readSwitch(c, "couplingSolidDensity", "current", "rest", s.restCouplingSolidDensity);
+  s.setSequentialPressure = readSwitch(c, "pressureSweep", "jacobi", "setSequential", s.setSequentialPressure);
+  s.referenceWarmStartCap = readSwitch(c, "pressureWarmStartCap", "none", "reference", s.referenceWarmStartCap);
+  c.checkUnknownKeys();
+  return s;
+}
+
 } // namespace
+
+CompatibilitySettings CompatibilitySettings::reference() {
+  CompatibilitySettings s;
+  s.unitLambdaVolumetricStress = s.lambdaScaledBloating = s.deltaTScaledInitialGuess = true;
+  s.restCouplingSolidDensity = s.setSequentialPressure = s.referenceWarmStartCap = true;
+  return s;
+}
 
 SolverSettings SolverSettings::read(const Dictionary& dict) {
   SolverSettings s;
@@ -39,6 +68,7 @@ SolverSettings SolverSettings::read(const Dictionary& dict) {
     is.preconditioner = i->getWord("preconditioner", {"blockJacobi", "none"}, "blockJacobi") == "blockJacobi";
     i->checkUnknownKeys();
   }
+  if (auto c = dict.optionalSubDict("compatibility")) s.compatibility = readCompatibility(*c);
   if (auto n = dict.optionalSubDict("neighbourSearch")) {
     s.sortInterval = static_cast<int>(n->getInt("sortInterval", s.sortInterval, Range::closed(0, 1e9)));
     n->checkUnknownKeys();

@@ -42,9 +42,24 @@ struct HealthSettings {
   std::optional<Domain> domain;
 };
 
+/// The switches of METHOD.md §10: the defaults follow the paper; the alternatives reproduce the behaviour behind
+/// the authors' published setups (block `compatibility` of system/solverDict, `preset: reference` sets them all).
+struct CompatibilitySettings {
+  bool unitLambdaVolumetricStress = false; ///< volumetricStress: lambda (false) | unitLambda: k_l tr(eps) I
+  bool lambdaScaledBloating = false;       ///< bloatingStress: absolute (false) | lambdaScaled: -lambda eta S I
+  bool deltaTScaledInitialGuess = false;   ///< implicitInitialGuess: deltaV (false) | deltaTDeltaV: v^n + dt dv
+  bool restCouplingSolidDensity = false;   ///< couplingSolidDensity: current rho_t (false) | rest: rho_b in Eq. 11, 16
+  bool setSequentialPressure = false;      ///< pressureSweep: jacobi (false) | setSequential
+  bool referenceWarmStartCap = false;      ///< pressureWarmStartCap: none (false) | reference
+
+  /// The alternatives of all switches at once (`preset: reference`).
+  static CompatibilitySettings reference();
+};
+
 struct SolverSettings {
   PressureSettings pressure;
   ImplicitSettings implicit;
+  CompatibilitySettings compatibility;
   HealthSettings health;
   int sortInterval = 500; ///< Morton reorder period in steps, 0 = never
   int threads = 0;        ///< OpenMP threads, 0 = the OpenMP default

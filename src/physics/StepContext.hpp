@@ -3,6 +3,7 @@
 
 #include "physics/FluidProperties.hpp"
 #include "physics/PorousMaterial.hpp"
+#include "physics/SolverSettings.hpp"
 #include "sph/Kernel.hpp"
 #include "sph/NeighbourSearch.hpp"
 #include "sph/ParticleSystem.hpp"
@@ -37,6 +38,7 @@ struct StepContext {
   std::vector<std::size_t> dynamicSets;         ///< fluid and porous sets: the unknowns
   std::vector<std::size_t> boundarySets;        ///< walls: known positions and velocities
   std::vector<const PorousMaterial*> materials; ///< by set index: the material of a porous set, else null
+  CompatibilitySettings compatibility;          ///< METHOD.md §10 (defaults: the paper's behaviour)
 };
 
 } // namespace poro

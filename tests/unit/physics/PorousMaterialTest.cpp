@@ -43,9 +43,15 @@ TEST(PorousMaterial, ReadsEveryKeyInFileOrder) {
                               "  dragViscosity: 10\n"                            // 5
                               "  poissonsRatio: 0.25\n"                          // 6
                               "  capillaryFalloff: 0.5\n"                        // 7
-                              "  youngsModulus: 0\n"                             // 8
+                              "  youngsModulus: 2.5e5\n"                         // 8
                               "  fixedBox: {min: [0, 0, 0], max: [1, 0.1, 1]}\n" // 9
-                              "clay:\n"                                          // 10
+                              "  capillaryStrength: 500\n"
+                              "  bloating: -1e3\n"
+                              "  shearSoftening: -2\n"
+                              "  volumeSoftening: 0.5\n"
+                              "  dampingViscosity: 20\n"
+                              "  boundaryDampingViscosity: 200\n"
+                              "clay:\n"
                               "  porosity: 0.2\n"
                               "  bulkDensity: 1600\n");
   ASSERT_EQ(materials.size(), 2u);
@@ -58,6 +64,13 @@ TEST(PorousMaterial, ReadsEveryKeyInFileOrder) {
   EXPECT_EQ(sand.dragViscosity, 10.0);
   EXPECT_EQ(sand.poissonsRatio, 0.25);
   EXPECT_EQ(sand.capillaryFalloff, 0.5);
+  EXPECT_EQ(sand.youngsModulus, 2.5e5);
+  EXPECT_EQ(sand.capillaryStrength, 500.0);
+  EXPECT_EQ(sand.bloating, -1e3);
+  EXPECT_EQ(sand.shearSoftening, -2.0);
+  EXPECT_EQ(sand.volumeSoftening, 0.5);
+  EXPECT_EQ(sand.dampingViscosity, 20.0);
+  EXPECT_EQ(sand.boundaryDampingViscosity, 200.0);
   ASSERT_TRUE(sand.fixedBox.has_value());
   EXPECT_EQ(sand.fixedBox->first, Vec3(0, 0, 0));
   EXPECT_EQ(sand.fixedBox->second, Vec3(1, 0.1, 1));
@@ -131,14 +144,16 @@ INSTANTIATE_TEST_SUITE_P(
                     "'sand.solidDensty'", "did you mean 'solidDensity'?"},
         BadMaterial{"sand:\n  porosity: 0.4\n  solidDensity: 2650\n  dragViscosty: 1\n",
                     "constant/porosityProperties:4", "'sand.dragViscosty'", "did you mean 'dragViscosity'?"},
-        BadMaterial{"sand:\n  porosity: 0.4\n  solidDensity: 2650\n  youngsModulus: 1e6\n",
-                    "constant/porosityProperties:4", "'sand.youngsModulus'", "is not supported by this version"},
-        BadMaterial{"sand:\n  porosity: 0.4\n  solidDensity: 2650\n  capillaryStrength: 0.1\n",
-                    "constant/porosityProperties:4", "'sand.capillaryStrength'", "not supported"},
-        BadMaterial{"sand:\n  porosity: 0.4\n  solidDensity: 2650\n  bloating: -5\n", "constant/porosityProperties:4",
-                    "'sand.bloating'", "not supported"},
-        BadMaterial{"sand:\n  porosity: 0.4\n  solidDensity: 2650\n  dampingViscosity: 2\n",
-                    "constant/porosityProperties:4", "'sand.dampingViscosity'", "not supported"},
+        BadMaterial{"sand:\n  porosity: 0.4\n  solidDensity: 2650\n  capillaryStrength: -0.1\n",
+                    "constant/porosityProperties:4", "'sand.capillaryStrength'", ">= 0"},
+        BadMaterial{"sand:\n  porosity: 0.4\n  solidDensity: 2650\n  bloating: .nan\n", "constant/porosityProperties:4",
+                    "'sand.bloating'", "finite"},
+        BadMaterial{"sand:\n  porosity: 0.4\n  solidDensity: 2650\n  dampingViscosity: -2\n",
+                    "constant/porosityProperties:4", "'sand.dampingViscosity'", ">= 0"},
+        BadMaterial{"sand:\n  porosity: 0.4\n  solidDensity: 2650\n  boundaryDampingViscosity: -2\n",
+                    "constant/porosityProperties:4", "'sand.boundaryDampingViscosity'", ">= 0"},
+        BadMaterial{"sand:\n  porosity: 0.4\n  solidDensity: 2650\n  shearSoftening: .inf\n",
+                    "constant/porosityProperties:4", "'sand.shearSoftening'", "finite"},
         BadMaterial{"sand:\n  porosity: 0.4\n  solidDensity: 2650\n  youngsModulus: -1\n",
                     "constant/porosityProperties:4", "'sand.youngsModulus'", ">= 0"},
         BadMaterial{"sand:\n  porosity: 0.4\n  solidDensity: 2650\n  poissonsRatio: 0.5\n",
