@@ -127,12 +127,14 @@ linalg::CgResult ImplicitSolver::solve(const StepContext& ctx) {
 
   const linalg::BlockVector b = view(ctx, kRhs), u = view(ctx, kUnknown);
   rhs(b);
-  for (std::size_t a : ctx.dynamicSets) { // initial guess v^n + dv (METHOD.md §6.5.8)
+  // Initial guess v^n + dv (METHOD.md §6.5.8); compatibility implicitInitialGuess deltaTDeltaV: v^n + dt dv.
+  const double guessScale = ctx.compatibility.deltaTScaledInitialGuess ? ctx.dt : 1.0;
+  for (std::size_t a : ctx.dynamicSets) {
     ParticleSet& set = ctx.particles[a];
     const auto& v = set.v();
     const auto& dv = set.vec3(field::deltaV);
     auto& guess = set.vec3(kUnknown);
-    parallel::forEach(set.size(), [&](std::size_t i) { guess[i] = v[i] + dv[i]; });
+    parallel::forEach(set.size(), [&](std::size_t i) { guess[i] = v[i] + guessScale * dv[i]; });
   }
   linalg::BlockDiagonal inverse;
   if (settings_.preconditioner) {

@@ -38,6 +38,11 @@ struct PorousMaterial {
 
   /// rho^max: the largest density the pressure solve admits (METHOD.md §3.1).
   double maxDensity() const { return compressible ? solidDensity : bulkDensity; }
+  /// Lame parameters of the skeleton: mu = E / (2 (1 + nu)), lambda = E nu / ((1 + nu)(1 - 2 nu)) [Pa].
+  double shearModulus() const { return youngsModulus / (2.0 * (1.0 + poissonsRatio)); }
+  double lameLambda() const {
+    return youngsModulus * poissonsRatio / ((1.0 + poissonsRatio) * (1.0 - 2.0 * poissonsRatio));
+  }
   /// c_s = rho_b / rho^max: the own-body volume factor (1 incompressible, 1 - phi compressible).
   double ownFactor() const { return bulkDensity / maxDensity(); }
 

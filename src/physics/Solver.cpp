@@ -6,8 +6,9 @@
 #include "core/StopSignals.hpp"
 #include "physics/Buoyancy.hpp"
 #include "physics/Densities.hpp"
+#include "physics/Elasticity.hpp"
 #include "physics/FieldNames.hpp"
-#include "physics/FluidViscosity.hpp"
+#include "physics/Viscosity.hpp"
 #include "physics/NumericalHealth.hpp"
 #include "physics/PorousDrag.hpp"
 #include "physics/TimeStepSize.hpp"
@@ -27,7 +28,8 @@ namespace {
 /// Implicit terms in the order they add to the operator (STYLE.md §5: registration is an explicit list).
 std::vector<std::unique_ptr<ImplicitTerm>> makeImplicitTerms() {
   std::vector<std::unique_ptr<ImplicitTerm>> terms;
-  terms.push_back(std::make_unique<FluidViscosity>());
+  terms.push_back(std::make_unique<Viscosity>());
+  terms.push_back(std::make_unique<Elasticity>());
   terms.push_back(std::make_unique<PorousDrag>());
   terms.push_back(std::make_unique<Buoyancy>());
   return terms;
@@ -108,6 +110,7 @@ void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
   set.addInt(field::materialId, Restart);
   auto& fixed = set.addInt(field::fixed, Restart);
   auto& rest = set.addVec3(field::restPosition, Restart);
+  if (material.youngsModulus > 0.0) Elasticity::registerFields(set);
   // The rest state is the sampled one: X = x at step 0, read back from the time directory afterwards.
   if (state_.step == 0) rest = set.x();
   if (material.fixedBox) { // strictly inside the material's fixedBox at X (METHOD.md §4.2)
@@ -352,7 +355,7 @@ void Solver::checkIterations(const Writer& write) {
   if (!report_.implicit.converged) {
     std::ostringstream msg;
     msg << std::setprecision(6) << "step " << state_.step << " (time " << state_.time
-        << " s): the implicit solve (viscosity, drag, buoyancy) reached implicit.maxIterations = "
+        << " s): the implicit solve (viscosity, elasticity, drag, adhesion, buoyancy) reached implicit.maxIterations = "
         << settings_.implicit.maxIterations << " with relative residual " << report_.implicit.relativeResidual
         << " (tolerance " << settings_.implicit.tolerance << "). To converge: " << whatToChange()
         << ", or raise implicit.maxIterations in system/solverDict";

@@ -30,8 +30,7 @@ CompatibilitySettings readCompatibility(const Dictionary& c) {
   s.lambdaScaledBloating = readSwitch(c, "bloatingStress", "absolute", "lambdaScaled", s.lambdaScaledBloating);
   s.deltaTScaledInitialGuess =
       readSwitch(c, "implicitInitialGuess", "deltaV", "deltaTDeltaV", s.deltaTScaledInitialGuess);
-  s.restCouplingSolidDensity =
-      readSwitch(c, "couplingSolidDensity", "current", "rest", s.restCouplingSolidDensity);
+  s.restCouplingSolidDensity = readSwitch(c, "couplingSolidDensity", "current", "rest", s.restCouplingSolidDensity);
   s.setSequentialPressure = readSwitch(c, "pressureSweep", "jacobi", "setSequential", s.setSequentialPressure);
   s.referenceWarmStartCap = readSwitch(c, "pressureWarmStartCap", "none", "reference", s.referenceWarmStartCap);
   c.checkUnknownKeys();

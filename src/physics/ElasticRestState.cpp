@@ -1,0 +1,71 @@
+#include "physics/ElasticRestState.hpp"
+
+#include "core/Parallel.hpp"
+#include "physics/FieldNames.hpp"
+#include "sph/NeighbourSearch.hpp"
+#include "sph/ParticleSet.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+
+namespace poro {
+
+namespace {
+constexpr double kDeterminantThreshold = 1e-9; // METHOD.md §8: below it L = I
+} // namespace
+
+bool ElasticRestState::update(const ParticleSet& set, const CubicKernel& kernel) {
+  const auto& ids = set.integer(field::id);
+  if (!volume_.empty() && ids == ids_) return false;
+  build(set, kernel);
+  return true;
+}
+
+void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) {
+  const std::size_t n = set.size();
+  const auto& rest = set.vec3(field::restPosition);
+  const auto& ids = set.integer(field::id);
+  const auto& objects = set.integer(field::objectId);
+  ids_ = ids;
+
+  NeighbourSearch search(kernel.supportRadius());
+  search.update({&rest}, {{true}});
+  const NeighbourList& all = search.list(0, 0);
+
+  // N0: same object only (two bodies of one material that start in contact are not glued), by persistent id.
+  std::vector<std::vector<Index>> lists(n);
+  parallel::forEach(n, [&](std::size_t s) {
+    for (Index t : all.of(s))
+      if (objects[static_cast<std::size_t>(t)] == objects[s]) lists[s].push_back(t);
+    std::sort(lists[s].begin(), lists[s].end(),
+              [&](Index a, Index b) { return ids[static_cast<std::size_t>(a)] < ids[static_cast<std::size_t>(b)]; });
+  });
+  offsets_.assign(n + 1, 0);
+  for (std::size_t s = 0; s < n; ++s) offsets_[s + 1] = offsets_[s] + static_cast<std::int64_t>(lists[s].size());
+  neighbours_.resize(static_cast<std::size_t>(offsets_[n]));
+  restGradients_.resize(neighbours_.size());
+  volume_.resize(n);
+  correction_.resize(n);
+  parallel::forEach(n, [&](std::size_t s) {
+    double shepard = kernel.w0();
+    std::size_t pair = begin(s);
+    for (Index t : lists[s]) {
+      const Vec3 xst = rest[s] - rest[static_cast<std::size_t>(t)];
+      shepard += kernel.w(xst);
+      neighbours_[pair] = t;
+      restGradients_[pair++] = kernel.grad(xst);
+    }
+    volume_[s] = 1.0 / shepard;
+  });
+  parallel::forEach(n, [&](std::size_t s) {
+    Mat3 moment = Mat3::Zero();
+    for (std::size_t pair = begin(s); pair < end(s); ++pair) {
+      const std::size_t t = static_cast<std::size_t>(neighbours_[pair]);
+      moment += volume_[t] * restGradients_[pair] * (rest[t] - rest[s]).transpose();
+    }
+    correction_[s] = std::abs(moment.determinant()) > kDeterminantThreshold ? Mat3(moment.inverse()) : Mat3::Identity();
+  });
+}
+
+} // namespace poro

@@ -1,0 +1,45 @@
+#pragma once
+/// Rest state of an elastic porous set (METHOD.md §4.1), built from the initial positions X and object ids:
+///   N0(s): neighbours of s within H at X with the same object id, ordered by persistent id;
+///   V0_s = 1/(W(0) + sum_{t in N0(s)} W(X_s - X_t))                 (Shepard rest volume);
+///   L_s = (sum_{t in N0(s)} V0_t gradW(X_s - X_t) (x) (X_t - X_s))^-1 (kernel-gradient correction, I if
+///         |det| <= 1e-9).
+/// Everything is a function of X, ids and object ids, summed in persistent-id order, so a rebuild after a
+/// Morton sort, a particle removal or a restart gives the same numbers bit for bit.
+
+#include "core/Types.hpp"
+#include "sph/Kernel.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace poro {
+class ParticleSet;
+
+class ElasticRestState {
+public:
+  /// Rebuilds from the set's X, id and objectId fields when the particles were reordered or removed since
+  /// the last build (or never built). Returns true if it rebuilt.
+  bool update(const ParticleSet& set, const CubicKernel& kernel);
+
+  std::size_t size() const { return volume_.size(); }
+  /// N0(s) as indices into the set's current order, and the rest gradient gradW(X_s - X_t) per pair.
+  std::size_t begin(std::size_t s) const { return static_cast<std::size_t>(offsets_[s]); }
+  std::size_t end(std::size_t s) const { return static_cast<std::size_t>(offsets_[s + 1]); }
+  Index neighbour(std::size_t pair) const { return neighbours_[pair]; }
+  const Vec3& restGradient(std::size_t pair) const { return restGradients_[pair]; }
+  double volume(std::size_t s) const { return volume_[s]; }
+  const Mat3& correction(std::size_t s) const { return correction_[s]; }
+
+private:
+  void build(const ParticleSet& set, const CubicKernel& kernel);
+
+  std::vector<std::int64_t> ids_; ///< persistent ids in the order of the last build
+  std::vector<std::int64_t> offsets_;
+  std::vector<Index> neighbours_;
+  std::vector<Vec3> restGradients_;
+  std::vector<double> volume_;
+  std::vector<Mat3> correction_;
+};
+
+} // namespace poro

@@ -1,0 +1,173 @@
+#include "physics/Elasticity.hpp"
+
+#include "core/Parallel.hpp"
+#include "physics/FieldNames.hpp"
+#include "physics/RotationExtraction.hpp"
+
+#include <algorithm>
+
+namespace poro {
+
+namespace {
+constexpr double kLameFloor = 1e-3; // METHOD.md §8: softening factors stay positive
+
+bool isElastic(const PorousMaterial* material) { return material && material->youngsModulus > 0.0; }
+
+Mat3 symmetric(const Mat3& a) { return 0.5 * (a + a.transpose()); }
+
+/// P = 2 shear eps + volumetric tr(eps) I.
+Mat3 stressOf(const Mat3& eps, double shear, double volumetric) {
+  return 2.0 * shear * eps + (volumetric * eps.trace()) * Mat3::Identity();
+}
+
+/// B(g) = shear (|g|^2 I + g g^T) + volumetric g g^T: the block a stress couples back onto one velocity.
+Mat3 stiffnessBlock(const Vec3& g, double shear, double volumetric) {
+  const Mat3 outer = g * g.transpose();
+  return shear * (g.squaredNorm() * Mat3::Identity() + outer) + volumetric * outer;
+}
+} // namespace
+
+void Elasticity::registerFields(ParticleSet& set) {
+  auto& rotation = set.addMat3(field::rotation, Restart);
+  // A new set starts unrotated; a restarted one keeps what it read (never all zeros).
+  for (Mat3& r : rotation)
+    if (r.isZero()) r.setIdentity();
+}
+
+bool Elasticity::enabled(const StepContext& ctx) const {
+  return std::any_of(ctx.dynamicSets.begin(), ctx.dynamicSets.end(),
+                     [&](std::size_t s) { return isElastic(ctx.materials[s]); });
+}
+
+void Elasticity::prepare(const StepContext& ctx) {
+  ctx_ = &ctx;
+  rest_.resize(ctx.particles.size());
+  bodies_.clear();
+  for (std::size_t p = 0; p < ctx.dynamicSets.size(); ++p) {
+    const std::size_t s = ctx.dynamicSets[p];
+    if (!isElastic(ctx.materials[s])) continue;
+    Body body;
+    body.set = s;
+    body.part = p;
+    rest_[s].update(ctx.particles[s], ctx.kernel);
+    prepareBody(ctx, body);
+    bodies_.push_back(std::move(body));
+  }
+}
+
+void Elasticity::prepareBody(const StepContext& ctx, Body& body) {
+  ParticleSet& set = ctx.particles[body.set];
+  const PorousMaterial& material = *ctx.materials[body.set];
+  const ElasticRestState& rest = rest_[body.set];
+  const std::size_t n = set.size();
+  const auto& x = set.x();
+  const auto& restX = set.vec3(field::restPosition);
+  const auto& saturation = set.real(field::saturation);
+  auto& rotation = set.mat3(field::rotation);
+  const double mu = material.shearModulus();
+  const double lambda = material.lameLambda();
+  const double volumetricModulus = ctx.compatibility.unitLambdaVolumetricStress ? 1.0 : lambda;
+  const double bloating = material.bloating * (ctx.compatibility.lambdaScaledBloating ? lambda : 1.0);
+
+  body.shear.resize(n);
+  body.volumetric.resize(n);
+  body.rotatedCorrection.resize(n);
+  body.strain.resize(n);
+  body.rhsStress.resize(n);
+  body.stress.resize(n);
+  parallel::forEach(n, [&](std::size_t s) {
+    // Rotation first (METHOD.md §6.5.2): F = [sum V0_t (x_t - x_s) gradW0^T] L^T.
+    Mat3 deformed = Mat3::Zero(), displaced = Mat3::Zero();
+    for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
+      const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
+      deformed += rest.volume(t) * (x[t] - x[s]) * rest.restGradient(pair).transpose();
+    }
+    const Mat3& correction = rest.correction(s);
+    rotation[s] = extractRotation(deformed * correction.transpose(), rotation[s]);
+    const Mat3 rl = rotation[s] * correction;
+    for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
+      const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
+      const Vec3 offset = (x[t] - x[s]) - rotation[s] * (restX[t] - restX[s]);
+      displaced += rest.volume(t) * offset * rest.restGradient(pair).transpose();
+    }
+    const double sat = saturation[s];
+    body.shear[s] = std::max(1.0 + material.shearSoftening * sat, kLameFloor) * mu;
+    body.volumetric[s] = std::max(1.0 + material.volumeSoftening * sat, kLameFloor) * volumetricModulus;
+    body.rotatedCorrection[s] = rl;
+    // F^ = I + displaced RL^T, eps = sym(F^) - I.
+    body.strain[s] = symmetric(displaced * rl.transpose());
+    const Mat3 stress =
+        stressOf(body.strain[s], body.shear[s], body.volumetric[s]) - (bloating * sat) * Mat3::Identity();
+    body.rhsStress[s] = stress * rl;
+  });
+}
+
+Mat3 Elasticity::strain(std::size_t s, std::size_t i) const {
+  for (const Body& body : bodies_)
+    if (body.set == s) return body.strain[i];
+  return Mat3::Zero();
+}
+
+Vec3 Elasticity::force(const Body& body, const std::vector<Mat3>& m, std::size_t s) const {
+  const ElasticRestState& rest = rest_[body.set];
+  Vec3 sum = Vec3::Zero();
+  for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
+    const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
+    sum += rest.volume(t) * ((m[s] + m[t]) * rest.restGradient(pair));
+  }
+  return rest.volume(s) * sum;
+}
+
+void Elasticity::addApply(const linalg::BlockVector& u, const linalg::BlockVector& au) const {
+  const double dt = ctx_->dt;
+  for (const Body& body : bodies_) {
+    const ElasticRestState& rest = rest_[body.set];
+    const Vec3* v = u[body.part].data;
+    Vec3* out = au[body.part].data;
+    const std::size_t n = u[body.part].size;
+    // All stresses first, then the forces (METHOD.md §6.5.4).
+    parallel::forEach(n, [&](std::size_t s) {
+      Mat3 gradient = Mat3::Zero();
+      for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
+        const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
+        gradient += rest.volume(t) * (v[t] - v[s]) * rest.restGradient(pair).transpose();
+      }
+      const Mat3& rl = body.rotatedCorrection[s];
+      const Mat3 eps = symmetric(dt * gradient * rl.transpose());
+      body.stress[s] = stressOf(eps, body.shear[s], body.volumetric[s]) * rl;
+    });
+    parallel::forEach(n, [&](std::size_t s) { out[s] -= dt * force(body, body.stress, s); });
+  }
+}
+
+void Elasticity::addDiagonal(const linalg::BlockDiagonal& d) const {
+  const double dt2 = ctx_->dt * ctx_->dt;
+  for (const Body& body : bodies_) {
+    const ElasticRestState& rest = rest_[body.set];
+    Mat3* out = d[body.part].data;
+    parallel::forEach(d[body.part].size, [&](std::size_t s) {
+      // D_s = dt^2 [V0_s B_s(G_s) + V0_s^2 sum_t V0_t B_t(g_ts)], G_s = sum_t V0_t g_st (METHOD.md §6.5.8).
+      Vec3 gradientSum = Vec3::Zero();
+      Mat3 neighbours = Mat3::Zero();
+      for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
+        const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
+        gradientSum += rest.volume(t) * rest.restGradient(pair);
+        const Vec3 gts = body.rotatedCorrection[t] * rest.restGradient(pair);
+        neighbours += rest.volume(t) * stiffnessBlock(gts, body.shear[t], body.volumetric[t]);
+      }
+      const double v0 = rest.volume(s);
+      const Vec3 g = body.rotatedCorrection[s] * gradientSum;
+      out[s] += dt2 * (v0 * stiffnessBlock(g, body.shear[s], body.volumetric[s]) + v0 * v0 * neighbours);
+    });
+  }
+}
+
+void Elasticity::addRhs(const linalg::BlockVector& b) const {
+  const double dt = ctx_->dt;
+  for (const Body& body : bodies_) {
+    Vec3* out = b[body.part].data;
+    parallel::forEach(b[body.part].size, [&](std::size_t s) { out[s] += dt * force(body, body.rhsStress, s); });
+  }
+}
+
+} // namespace poro

@@ -1,0 +1,295 @@
+// Corotated elasticity with porous effects (METHOD.md §4.1, §6.5.2, §6.5.4, §6.5.8; Eq. 19-21).
+
+#include "physics/Elasticity.hpp"
+#include "PorousTestSystems.hpp"
+#include "physics/RotationExtraction.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <random>
+
+namespace poro {
+namespace {
+
+using namespace test;
+
+const char* const kU = "testU";
+const char* const kAu = "testAu";
+const char* const kW = "testW";
+const char* const kAw = "testAw";
+const char* const kB = "testB";
+constexpr double kDt = 1e-3;
+
+PorousMaterial rubber(double youngs = 2.5e5, double poisson = 0.33) {
+  PorousMaterial m = material("rubber", 0.6, 2500.0, false);
+  m.youngsModulus = youngs;
+  m.poissonsRatio = poisson;
+  return m;
+}
+
+Mat3 rotationAbout(const Vec3& axis, double angle) {
+  return Mat3(Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix());
+}
+
+/// A block of elastic porous particles (no fluid, no walls, no gravity) whose positions can be deformed
+/// after the rest state X was taken; an optional second block is another object of the same material.
+class ElasticBlock : public ::testing::Test {
+protected:
+  void build(const PorousMaterial& m, bool secondObject = false, bool jitter = false) {
+    std::vector<Vec3> x = sampleBox(Vec3::Zero(), Vec3(0.12, 0.1, 0.08), kR);
+    if (jitter) {
+      std::mt19937 rng(5);
+      std::uniform_real_distribution<double> d(-0.2 * kR, 0.2 * kR);
+      for (Vec3& p : x) p += Vec3(d(rng), d(rng), d(rng));
+    }
+    ParticleSystem ps(kR);
+    ParticleSet& set = addSet(ps, m.name, SetKind::Porous, x, 0);
+    if (secondObject) appendObject(set, sampleBox(Vec3(0.12, 0, 0), Vec3(0.2, 0.1, 0.08), kR), 1);
+    solver_ = std::make_unique<Solver>(std::move(ps), weightless(), std::vector<PorousMaterial>{m}, SolverSettings{},
+                                       fixedStep(kDt), RunState{});
+  }
+  ParticleSet& set() { return solver_->particles()[0]; }
+  /// x = map(X) for every particle; the rotation warm start is set to `warm`.
+  template <class Map> void deform(const Map& map, const Mat3& warm = Mat3::Identity()) {
+    auto& x = set().x();
+    const auto& rest = set().vec3(field::restPosition);
+    for (std::size_t i = 0; i < x.size(); ++i) x[i] = map(rest[i]);
+    for (Mat3& r : set().mat3(field::rotation)) r = warm;
+  }
+  void begin() {
+    ctx_ = std::make_unique<StepContext>(solver_->beginStep(kDt));
+    for (const char* name : {kU, kAu, kW, kAw, kB}) set().addVec3(name);
+  }
+  linalg::BlockVector view(const char* name) const { return ImplicitSolver::view(*ctx_, name); }
+  void randomise(const char* name, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> value(-1.0, 1.0);
+    for (auto& part : view(name))
+      for (std::size_t i = 0; i < part.size; ++i) part.data[i] = Vec3(value(rng), value(rng), value(rng));
+  }
+  /// Elastic forces of the position part (rhs minus momentum, over dt), with the term prepared on ctx_.
+  std::vector<Vec3> positionForces(Elasticity& term) {
+    term.prepare(*ctx_);
+    const auto b = view(kB);
+    for (std::size_t i = 0; i < b[0].size; ++i) b[0].data[i].setZero();
+    term.addRhs(b);
+    std::vector<Vec3> f(b[0].size);
+    for (std::size_t i = 0; i < f.size(); ++i) f[i] = b[0].data[i] / kDt;
+    return f;
+  }
+  /// Scale of one particle's elastic force for a strain of 1: E V0 / H.
+  double forceScale(const PorousMaterial& m) const { return m.youngsModulus * std::pow(2 * kR, 3) / (4 * kR); }
+
+  std::unique_ptr<Solver> solver_;
+  std::unique_ptr<StepContext> ctx_;
+};
+
+TEST_F(ElasticBlock, CorrectedGradientReproducesIdentityEverywhere) {
+  // sum_{t in N0(s)} V0_t (X_t - X_s) (x) L_s gradW(X_s - X_t) = I, surfaces and corners included (§4.1).
+  build(rubber(), true, true);
+  begin();
+  Elasticity term;
+  term.prepare(*ctx_);
+  const ElasticRestState& rest = term.restState(0);
+  const auto& X = set().vec3(field::restPosition);
+  const auto& object = set().integer(field::objectId);
+  ASSERT_EQ(rest.size(), set().size());
+  for (std::size_t s = 0; s < rest.size(); ++s) {
+    Mat3 sum = Mat3::Zero();
+    for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
+      const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
+      ASSERT_EQ(object[t], object[s]) << "elastic links never span objects";
+      sum += rest.volume(t) * (X[t] - X[s]) * (rest.correction(s) * rest.restGradient(pair)).transpose();
+    }
+    EXPECT_LT((sum - Mat3::Identity()).norm(), 1e-12) << "particle " << s;
+  }
+}
+
+TEST_F(ElasticBlock, ShepardRestVolumesMatchTheLatticeTable) {
+  // V0/V = 1.00003 interior, 1.176 face, 1.390 edge, 1.649 corner (METHOD.md §2.2).
+  build(rubber());
+  begin();
+  Elasticity term;
+  term.prepare(*ctx_);
+  const ElasticRestState& rest = term.restState(0);
+  const auto& X = set().vec3(field::restPosition);
+  const double v = std::pow(2 * kR, 3);
+  auto volumeAt = [&](const Vec3& p) { return rest.volume(nearest(X, p)) / v; };
+  EXPECT_NEAR(volumeAt(Vec3(0.05, 0.05, 0.03)), 1.00003, 1e-4);
+  EXPECT_NEAR(volumeAt(Vec3(0.05, 0.05, 0.0)), 1.176, 2e-3);
+  EXPECT_NEAR(volumeAt(Vec3(0.05, 0.0, 0.0)), 1.390, 2e-3);
+  EXPECT_NEAR(volumeAt(Vec3(0.0, 0.0, 0.0)), 1.649, 2e-3);
+}
+
+TEST(RotationExtraction, WarmStartedCallsConvergeToTheRotationOfQS) {
+  const Mat3 q = rotationAbout(Vec3(1, 2, -0.5), 2.0);
+  Mat3 sym;
+  sym << 1.3, 0.2, -0.1, 0.2, 0.8, 0.05, -0.1, 0.05, 1.1;
+  Mat3 r = Mat3::Identity();
+  for (int call = 0; call < 20; ++call) r = extractRotation(q * sym, r);
+  EXPECT_LT((r - q).norm(), 1e-6);
+  EXPECT_NEAR(r.determinant(), 1.0, 1e-12);
+}
+
+TEST_F(ElasticBlock, RigidRotationGivesItsRotationAndNoForce) {
+  const PorousMaterial m = rubber();
+  build(m);
+  const Mat3 q = rotationAbout(Vec3(0.3, 1, 0.2), 0.7);
+  const Vec3 shift(0.4, -0.2, 0.1);
+  deform([&](const Vec3& p) { return Vec3(q * p + shift); });
+  begin();
+  Elasticity term;
+  // Warm-started from I: repeated steps at the same pose converge (the solver runs one extraction per step).
+  for (int k = 0; k < 5; ++k) term.prepare(*ctx_);
+  const std::vector<Vec3> f = positionForces(term);
+  const auto& r = set().mat3(field::rotation);
+  // The extraction stops at |omega| < 1e-9 (an angle of about 1.5e-9 for F = R), hence 1e-8.
+  for (std::size_t s = 0; s < f.size(); ++s) {
+    EXPECT_LT((r[s] - q).norm(), 1e-8) << "particle " << s;
+    EXPECT_LT(term.strain(0, s).norm(), 1e-8) << "particle " << s;
+    EXPECT_LT(f[s].norm(), 1e-8 * forceScale(m)) << "particle " << s;
+  }
+}
+
+TEST_F(ElasticBlock, AffineStretchGivesItsStrainExactlyEverywhere) {
+  // x = A X with A symmetric positive definite: eps = A - I at every particle, surfaces included (§6.5.4).
+  build(rubber(), false, true);
+  Mat3 a;
+  a << 1.02, 0.005, -0.003, 0.005, 0.99, 0.004, -0.003, 0.004, 1.01;
+  deform([&](const Vec3& p) { return Vec3(a * p); });
+  begin();
+  Elasticity term;
+  term.prepare(*ctx_);
+  for (std::size_t s = 0; s < set().size(); ++s)
+    EXPECT_LT((term.strain(0, s) - (a - Mat3::Identity())).norm(), 1e-10) << "particle " << s;
+}
+
+TEST_F(ElasticBlock, FreeSwellingByBloatingIsAnEquilibrium) {
+  // Uniform S and no gravity: expanding by eta_bloat S / (3K), K = lambda + 2 mu / 3, zeroes every stress.
+  PorousMaterial m = rubber();
+  m.bloating = 3e4;
+  build(m);
+  const double saturation = 0.8;
+  const double bulk = m.lameLambda() + 2.0 * m.shearModulus() / 3.0;
+  const double swelling = m.bloating * saturation / (3.0 * bulk);
+  deform([&](const Vec3& p) { return Vec3((1.0 + swelling) * p); });
+  begin();
+  for (double& s : set().real(field::saturation)) s = saturation;
+  Elasticity term;
+  const std::vector<Vec3> swollen = positionForces(term);
+  deform([&](const Vec3& p) { return p; });
+  for (double& s : set().real(field::saturation)) s = saturation;
+  const std::vector<Vec3> unswollen = positionForces(term);
+  double largest = 0.0;
+  for (const Vec3& f : unswollen) largest = std::max(largest, f.norm());
+  ASSERT_GT(largest, 1e-3 * forceScale(m)) << "bloating must push a body at its rest size";
+  for (std::size_t s = 0; s < swollen.size(); ++s) EXPECT_LT(swollen[s].norm(), 1e-9 * largest) << "particle " << s;
+}
+
+TEST_F(ElasticBlock, PairForcesCancel) {
+  // Momentum: sum of the position-part forces and of the velocity-part forces vanish to round-off.
+  build(rubber(), true, true);
+  Mat3 a;
+  a << 1.05, 0.02, 0.0, -0.01, 0.97, 0.03, 0.02, 0.0, 1.01;
+  const Mat3 q = rotationAbout(Vec3(0, 0, 1), 0.3);
+  deform([&](const Vec3& p) { return Vec3(q * a * p); });
+  begin();
+  Elasticity term;
+  const std::vector<Vec3> f = positionForces(term);
+  Vec3 total = Vec3::Zero();
+  double scale = 0.0;
+  for (const Vec3& fs : f) {
+    total += fs;
+    scale += fs.norm();
+  }
+  ASSERT_GT(scale, 0.0);
+  EXPECT_LT(total.norm(), 1e-12 * scale);
+
+  randomise(kU, 3);
+  solver_->implicitSolver().prepare(*ctx_);
+  solver_->implicitSolver().apply(view(kU), view(kAu));
+  const auto u = view(kU), au = view(kAu);
+  total.setZero();
+  scale = 0.0;
+  for (std::size_t i = 0; i < u[0].size; ++i) {
+    const Vec3 force = au[0].data[i] - set().mass * u[0].data[i];
+    total += force;
+    scale += force.norm();
+  }
+  ASSERT_GT(scale, 0.0);
+  EXPECT_LT(total.norm(), 1e-12 * scale);
+}
+
+TEST_F(ElasticBlock, OperatorIsSymmetricPositiveDefiniteWithExactDiagonal) {
+  build(rubber(2.5e5, 0.45), true, true);
+  deform([&](const Vec3& p) { return Vec3(rotationAbout(Vec3(1, 1, 0), 0.4) * p); }, rotationAbout(Vec3(1, 1, 0), 0.4));
+  begin();
+  for (std::size_t s = 0; s < set().size(); ++s) set().real(field::saturation)[s] = (s % 7) / 6.0;
+  const ImplicitSolver& op = solver_->implicitSolver();
+  solver_->implicitSolver().prepare(*ctx_);
+  randomise(kU, 1);
+  randomise(kW, 2);
+  op.apply(view(kU), view(kAu));
+  op.apply(view(kW), view(kAw));
+  const double wAu = linalg::dot(view(kW), view(kAu)), awU = linalg::dot(view(kAw), view(kU));
+  EXPECT_NEAR(wAu, awU, 1e-12 * std::abs(wAu));
+  EXPECT_GT(linalg::dot(view(kU), view(kAu)), 0.0);
+
+  set().addMat3("testD");
+  linalg::BlockDiagonal d{{set().mat3("testD").data(), set().size()}};
+  op.diagonal(d);
+  const auto u = view(kU), au = view(kAu);
+  for (std::size_t i = 0; i < u[0].size; i += 7)
+    for (int c = 0; c < 3; ++c) {
+      for (std::size_t j = 0; j < u[0].size; ++j) u[0].data[j].setZero();
+      u[0].data[i][c] = 1.0;
+      op.apply(u, au);
+      const Vec3 column = au[0].data[i];
+      EXPECT_LT((column - d[0].data[i].col(c)).norm(), 1e-12 * column.norm()) << "particle " << i;
+      // The elastic part of the diagonal is really there: more than the mass alone.
+      EXPECT_GT(d[0].data[i](c, c), set().mass * (1.0 + 1e-3));
+    }
+}
+
+TEST_F(ElasticBlock, VelocityPartIsTheLinearisationOfThePositionPart) {
+  // At a rigidly rotated rest pose the position-part force is linear in x to first order (the rotation's
+  // change is skew and drops out of sym): [F^x(x + h w) - F^x(x - h w)] / 2h = F^u(w) / dt.
+  const PorousMaterial m = rubber(2.5e5, 0.3);
+  build(m, false, true);
+  const Mat3 q = rotationAbout(Vec3(1, -1, 2), 0.5);
+  deform([&](const Vec3& p) { return Vec3(q * p); }, q);
+  begin();
+  randomise(kW, 9);
+  const std::vector<Vec3> x0 = set().x();
+  const auto w = view(kW);
+  const double h = 1e-7;
+  auto forcesAt = [&](double sign) {
+    for (std::size_t i = 0; i < x0.size(); ++i) set().x()[i] = x0[i] + sign * h * w[0].data[i];
+    for (Mat3& r : set().mat3(field::rotation)) r = q;
+    Elasticity term;
+    for (int k = 0; k < 3; ++k) term.prepare(*ctx_);
+    return positionForces(term);
+  };
+  const std::vector<Vec3> plus = forcesAt(1.0), minus = forcesAt(-1.0);
+  for (std::size_t i = 0; i < x0.size(); ++i) set().x()[i] = x0[i];
+  for (Mat3& r : set().mat3(field::rotation)) r = q;
+  Elasticity term;
+  term.prepare(*ctx_);
+  const auto aw = view(kAw);
+  for (std::size_t i = 0; i < aw[0].size; ++i) aw[0].data[i].setZero();
+  term.addApply(w, aw); // -dt F^u(w)
+  double largest = 0.0, worst = 0.0;
+  for (std::size_t i = 0; i < x0.size(); ++i) {
+    const Vec3 difference = (plus[i] - minus[i]) / (2 * h);
+    const Vec3 linear = -aw[0].data[i] / (kDt * kDt);
+    largest = std::max(largest, linear.norm());
+    worst = std::max(worst, (difference - linear).norm());
+  }
+  ASSERT_GT(largest, 0.0);
+  EXPECT_LT(worst, 1e-5 * largest);
+}
+
+} // namespace
+} // namespace poro
