@@ -15,6 +15,27 @@ double porosityOf(const ParticleSet& set, const std::vector<PorousMaterial>& mat
   throw InputError("porous particle set '" + set.name() + "': no such material in constant/porosityProperties");
 }
 
+/// Centre and extent of the object along the axis, and its largest density where the sets carry one.
+void addPlacement(const ParticleSystem& particles, const PorousObject& object, const Axis& axis,
+                  ObjectStatistics& stats) {
+  if (object.particles.empty()) return;
+  double sum = 0.0, lo = 0.0, hi = 0.0, densest = 0.0;
+  bool first = true, densities = true;
+  for (const auto& [set, i] : object.particles) {
+    const double c = axis.coordinate(particles[set].x()[i]);
+    sum += c;
+    lo = first ? c : std::min(lo, c);
+    hi = first ? c : std::max(hi, c);
+    first = false;
+    densities = densities && particles[set].has(field::density);
+    if (densities) densest = std::max(densest, particles[set].real(field::density)[i]);
+  }
+  stats.centre = sum / static_cast<double>(object.particles.size());
+  stats.minPosition = lo;
+  stats.maxPosition = hi;
+  if (densities) stats.maxDensity = densest;
+}
+
 } // namespace
 
 ObjectStatistics objectStatistics(const ParticleSystem& particles, const PorousObject& object, std::size_t absorbed,
@@ -40,6 +61,7 @@ ObjectStatistics objectStatistics(const ParticleSystem& particles, const PorousO
       stats.poreVolume += porosityOf(particles[set], settings.materials) * static_cast<double>(perSet[set]) * volume;
 
   stats.fractionFilled = stats.poreVolume > 0.0 ? stats.absorbedVolume / stats.poreVolume : 0.0;
+  addPlacement(particles, object, settings.axis, stats);
   if (!saturated || object.particles.empty()) return stats; // saturation unknown (0/ of sampleParticles)
 
   double sum = 0.0, largest = 0.0, lo = 0.0, hi = 0.0;

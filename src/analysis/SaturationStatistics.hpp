@@ -24,6 +24,11 @@ struct ObjectStatistics {
   std::size_t wetParticles = 0;         ///< saturation >= wetThreshold
   std::optional<double> wetMin, wetMax; ///< extent of the wet particles along the axis [m]; empty when none is wet
   std::optional<double> wetHeight;      ///< wetMax - wetMin [m]; 0 when none is wet, empty without saturation
+  /// Where the solid is: mean, lowest and highest coordinate of its particles along the axis [m] (floating,
+  /// sinking, squeezing); empty for an object without particles.
+  std::optional<double> centre, minPosition, maxPosition;
+  /// Largest density of its particles [kg/m^3] (a compressed skeleton stays <= rho_s^0); empty without data.
+  std::optional<double> maxDensity;
 };
 
 /// Statistics of `object`; `absorbed` is its count from countAbsorbedFluid. Throws InputError when one of

@@ -6,7 +6,8 @@ namespace {
 
 const char* const kObjectColumns[] = {"solidParticles", "absorbedParticles", "absorbedVolume_m3", "absorbedMass_kg",
                                       "poreVolume_m3",  "fractionFilled",    "meanSaturation",    "maxSaturation",
-                                      "wetParticles",   "wetMin_m",          "wetMax_m",          "wetHeight_m"};
+                                      "wetParticles",   "wetMin_m",          "wetMax_m",          "wetHeight_m",
+                                      "centre_m",       "minPosition_m",     "maxPosition_m",     "maxDensity_kg_per_m3"};
 const char* const kFluidColumns[] = {
     "particles",            "meanDensityError_percent", "maxDensityError_percent", "kineticEnergy_J",
     "momentumX_kg_m_per_s", "momentumY_kg_m_per_s",     "momentumZ_kg_m_per_s",    "potentialEnergy_J",
@@ -20,6 +21,7 @@ void addObject(CsvTable& table, const ObjectStatistics& o) {
   else
     table.add(std::string());
   table.add(o.wetMin).add(o.wetMax).add(o.wetHeight);
+  table.add(o.centre).add(o.minPosition).add(o.maxPosition).add(o.maxDensity);
 }
 
 /// The time as its directory is named ("0.3", where uniform/time may say 0.30000000000000004).

@@ -40,7 +40,9 @@ Time 0 of sampleParticles has no saturation or density yet: those cells stay emp
 Output in <case>/postProcessing/saturationAnalysis/ (rewritten on every run, for the selected times):
   timeSeries.csv          time_s, step; per object <name>.solidParticles, .absorbedParticles,
                           .absorbedVolume_m3, .absorbedMass_kg, .poreVolume_m3, .fractionFilled,
-                          .meanSaturation, .maxSaturation, .wetParticles, .wetMin_m, .wetMax_m, .wetHeight_m;
+                          .meanSaturation, .maxSaturation, .wetParticles, .wetMin_m, .wetMax_m, .wetHeight_m,
+                          .centre_m, .minPosition_m, .maxPosition_m (where the solid is along the axis),
+                          .maxDensity_kg_per_m3 (its densest particle);
                           fluid.particles, .meanDensityError_percent, .maxDensityError_percent,
                           .kineticEnergy_J, .momentumX_kg_m_per_s, .momentumY_kg_m_per_s, .momentumZ_kg_m_per_s,
                           .potentialEnergy_J, .maxSpeed_m_per_s, .minPosition_m, .maxPosition_m

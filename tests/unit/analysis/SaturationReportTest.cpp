@@ -43,9 +43,11 @@ TEST(SaturationTables, TimeSeriesHasNamedColumnsWithUnits) {
             "block.solidParticles,block.absorbedParticles,block.absorbedVolume_m3,block.absorbedMass_kg,"
             "block.poreVolume_m3,block.fractionFilled,block.meanSaturation,block.maxSaturation,block.wetParticles,"
             "block.wetMin_m,block.wetMax_m,block.wetHeight_m,"
+            "block.centre_m,block.minPosition_m,block.maxPosition_m,block.maxDensity_kg_per_m3,"
             "object3.solidParticles,object3.absorbedParticles,object3.absorbedVolume_m3,object3.absorbedMass_kg,"
             "object3.poreVolume_m3,object3.fractionFilled,object3.meanSaturation,object3.maxSaturation,"
             "object3.wetParticles,object3.wetMin_m,object3.wetMax_m,object3.wetHeight_m,"
+            "object3.centre_m,object3.minPosition_m,object3.maxPosition_m,object3.maxDensity_kg_per_m3,"
             "fluid.particles,fluid.meanDensityError_percent,fluid.maxDensityError_percent,fluid.kineticEnergy_J,"
             "fluid.momentumX_kg_m_per_s,fluid.momentumY_kg_m_per_s,fluid.momentumZ_kg_m_per_s,"
             "fluid.potentialEnergy_J,fluid.maxSpeed_m_per_s,fluid.minPosition_m,fluid.maxPosition_m");
@@ -53,8 +55,10 @@ TEST(SaturationTables, TimeSeriesHasNamedColumnsWithUnits) {
   const std::string volume = CsvTable::formatNumber(10 * v), pores = CsvTable::formatNumber(0.4 * 64 * v);
   // t = 0: no saturation and no density yet, so those cells are empty.
   EXPECT_EQ(rows[1].rfind("0,0,64,10," + volume + ",", 0), 0u) << rows[1];
-  EXPECT_NE(rows[1].find("," + pores + "," + CsvTable::formatNumber(10 / (0.4 * 64)) + ",,,,,,,8,"), std::string::npos)
-      << rows[1];
+  // Then six empty saturation cells, the block's centre and extent, an empty density, object3's 8 particles.
+  const std::size_t saturations = rows[1].find("," + pores + "," + CsvTable::formatNumber(10 / (0.4 * 64)) + ",,,,,,,");
+  EXPECT_NE(saturations, std::string::npos) << rows[1];
+  EXPECT_NE(rows[1].find(",,8,", saturations), std::string::npos) << rows[1];
   EXPECT_EQ(rows[2].rfind("0.5,10,64,10," + volume + ",", 0), 0u) << rows[2];
   EXPECT_NE(rows[2].find(",0.5,1,32,"), std::string::npos) << rows[2]; // mean and max saturation, wet particles
 }

@@ -103,6 +103,23 @@ TEST(SaturationStatistics, WetThresholdAndAxisDirection) {
   EXPECT_EQ(record.objects[1].wetParticles, 8u); // saturation 0.2 >= 0.2
 }
 
+TEST(SaturationStatistics, CentreExtentAndLargestDensityOfEachObject) {
+  ParticleSystem ps = syntheticSystem();
+  auto& rho = ps[1].addReal(field::density, Output);
+  for (std::size_t i = 0; i < rho.size(); ++i) rho[i] = 600.0 + static_cast<double>(i);
+  AnalysisSettings settings = syntheticSettings();
+  settings.axis = Axis::parse("-x");
+  const TimeRecord record = analyse(ps, settings);
+  const ObjectStatistics& block = record.objects[0];
+  EXPECT_NEAR(*block.centre, -0.04, 1e-15); // x = 0.01 ... 0.07, mean 0.04, along -x
+  EXPECT_NEAR(*block.minPosition, -0.07, 1e-15);
+  EXPECT_NEAR(*block.maxPosition, -0.01, 1e-15);
+  EXPECT_EQ(*block.maxDensity, 663.0);
+  const ObjectStatistics& sand = record.objects[1];
+  EXPECT_NEAR(*sand.centre, -0.52, 1e-15);
+  EXPECT_FALSE(sand.maxDensity); // no density field on that set
+}
+
 TEST(SaturationStatistics, WithoutSaturationFieldSaturationIsUnknown) {
   const TimeRecord record = analyse(syntheticSystem(false), syntheticSettings());
   const ObjectStatistics& block = record.objects[0];
