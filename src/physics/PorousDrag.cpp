@@ -1,17 +1,12 @@
 #include "physics/PorousDrag.hpp"
 
 #include "core/Parallel.hpp"
-#include "physics/FieldNames.hpp"
-
-#include <algorithm>
+#include "physics/CouplingDensity.hpp"
 
 namespace poro {
 
 namespace {
 constexpr double kDragFactor = 10.0; // 2(d + 2) for d = 3
-
-/// phi^min_t of the mixture density: keeps the coefficient within 20x of its in-pore value (METHOD.md §6.4).
-double porosityFloor(double phi) { return std::max(0.05 * phi, 0.01); }
 } // namespace
 
 double PorousDrag::coefficient(double mu, double massI, double rhoMix, double massT, double rhoT, double distance2,
@@ -38,21 +33,18 @@ void PorousDrag::prepare(const StepContext& ctx) {
   const ParticleSet& fluid = ctx.particles[fluidSet];
   const double h = ctx.kernel.supportRadius();
   const double regulariser = 0.01 * h * h;
-  const auto& rhoFluid = fluid.real(field::density);
-  const auto& phiLocal = fluid.real(field::localPorosity);
 
   for (std::size_t p = 0; p < ctx.dynamicSets.size(); ++p) {
     const std::size_t t = ctx.dynamicSets[p];
     const PorousMaterial* material = ctx.materials[t];
     if (!material || material->dragViscosity == 0.0) continue;
     const ParticleSet& solid = ctx.particles[t];
-    const auto& rhoSolid = solid.real(field::density);
     const double mu = material->dragViscosity;
-    const double floor = porosityFloor(material->porosity);
+    const MixtureDensity rhoMix(fluid, *material);
+    const CouplingSolidDensity rhoSolid(ctx, t); // rho_t^n, or rho_b with couplingSolidDensity: rest (§10)
     // K_it with i always the fluid particle, whichever side evaluates it.
     auto pairK = [&](std::size_t i, std::size_t s, double distance2) {
-      const double rhoMix = rhoFluid[i] * std::max(phiLocal[i], floor);
-      return coefficient(mu, fluid.mass, rhoMix, solid.mass, rhoSolid[s], distance2, regulariser);
+      return coefficient(mu, fluid.mass, rhoMix(i), solid.mass, rhoSolid(s), distance2, regulariser);
     };
     for (const bool fluidSide : {true, false}) {
       Side side{

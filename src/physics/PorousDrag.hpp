@@ -2,7 +2,8 @@
 /// Implicit porous drag between fluid and porous solids — Böttcher et al. 2025, Eq. (16) (METHOD.md §6.5.5):
 ///   K_it = 10 mu_por,t (m_i / rho^mix_it)(m_t / rho_t) / (|x_it|^2 + 0.01 H^2),
 ///   F_i += K_it (u_it . x_it) gradW_it,   F_t -= the same,
-///   rho^mix_it = rho^_i max(phi^loc_i, max(0.05 phi_t, 0.01))  (METHOD.md §6.4).
+///   rho^mix_it = rho^_i max(phi^loc_i, max(0.05 phi_t, 0.01))  (METHOD.md §6.4); rho_t the current density of
+///   t, or rho_b with the compatibility switch couplingSolidDensity: rest (METHOD.md §10).
 /// One coefficient per pair, evaluated by the same expression from both sides, so the pair forces are
 /// equal and opposite to the last bit. Implicit in both velocities; no wall drag.
 /// Keys: constant/porosityProperties <material>.dragViscosity [Pa s], >= 0, default 0.

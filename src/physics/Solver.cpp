@@ -5,6 +5,7 @@
 #include "core/Parallel.hpp"
 #include "core/StopSignals.hpp"
 #include "physics/Buoyancy.hpp"
+#include "physics/CapillaryAdhesion.hpp"
 #include "physics/Densities.hpp"
 #include "physics/Elasticity.hpp"
 #include "physics/FieldNames.hpp"
@@ -31,6 +32,7 @@ std::vector<std::unique_ptr<ImplicitTerm>> makeImplicitTerms() {
   terms.push_back(std::make_unique<Viscosity>());
   terms.push_back(std::make_unique<Elasticity>());
   terms.push_back(std::make_unique<PorousDrag>());
+  terms.push_back(std::make_unique<CapillaryAdhesion>());
   terms.push_back(std::make_unique<Buoyancy>());
   return terms;
 }
