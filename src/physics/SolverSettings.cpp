@@ -31,8 +31,13 @@ CompatibilitySettings readCompatibility(const Dictionary& c) {
   s.deltaTScaledInitialGuess =
       readSwitch(c, "implicitInitialGuess", "deltaV", "deltaTDeltaV", s.deltaTScaledInitialGuess);
   s.restCouplingSolidDensity = readSwitch(c, "couplingSolidDensity", "current", "rest", s.restCouplingSolidDensity);
-  s.setSequentialPressure = readSwitch(c, "pressureSweep", "jacobi", "setSequential", s.setSequentialPressure);
-  s.referenceWarmStartCap = readSwitch(c, "pressureWarmStartCap", "none", "reference", s.referenceWarmStartCap);
+  // The pressure solve has only the paper's sweep and warm start; say so rather than run something else.
+  for (const auto& [key, paper] : {std::pair<const char*, const char*>{"pressureSweep", "jacobi"},
+                                   std::pair<const char*, const char*>{"pressureWarmStartCap", "none"}})
+    if (c.has(key) &&
+        c.getWord(key, {paper, key == std::string("pressureSweep") ? "setSequential" : "reference"}) != paper)
+      c.fail(key, std::string("only '") + paper +
+                      "' is implemented in this version of poroSph (METHOD.md §10); remove the key");
   c.checkUnknownKeys();
   return s;
 }
@@ -42,7 +47,7 @@ CompatibilitySettings readCompatibility(const Dictionary& c) {
 CompatibilitySettings CompatibilitySettings::reference() {
   CompatibilitySettings s;
   s.unitLambdaVolumetricStress = s.lambdaScaledBloating = s.deltaTScaledInitialGuess = true;
-  s.restCouplingSolidDensity = s.setSequentialPressure = s.referenceWarmStartCap = true;
+  s.restCouplingSolidDensity = true;
   return s;
 }
 

@@ -1,0 +1,57 @@
+// system/solverDict compatibility block: the switches of METHOD.md §10.
+
+#include "core/Dictionary.hpp"
+#include "core/Error.hpp"
+#include "physics/SolverSettings.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace poro {
+namespace {
+
+CompatibilitySettings read(const std::string& text) {
+  return SolverSettings::read(Dictionary::parse(text, "system/solverDict")).compatibility;
+}
+
+std::string errorOf(const std::string& text) {
+  try {
+    read(text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no InputError for:\n" << text;
+  return "";
+}
+
+TEST(CompatibilitySettings, DefaultsFollowThePaper) {
+  const CompatibilitySettings c = read("threads: 0\n");
+  EXPECT_FALSE(c.unitLambdaVolumetricStress);
+  EXPECT_FALSE(c.lambdaScaledBloating);
+  EXPECT_FALSE(c.deltaTScaledInitialGuess);
+  EXPECT_FALSE(c.restCouplingSolidDensity);
+}
+
+TEST(CompatibilitySettings, ReferencePresetSetsEverySwitchAndSingleKeysOverrideIt) {
+  const CompatibilitySettings all = read("compatibility:\n  preset: reference\n");
+  EXPECT_TRUE(all.unitLambdaVolumetricStress && all.lambdaScaledBloating && all.deltaTScaledInitialGuess &&
+              all.restCouplingSolidDensity);
+  const CompatibilitySettings mixed = read("compatibility:\n  preset: reference\n  volumetricStress: lambda\n");
+  EXPECT_FALSE(mixed.unitLambdaVolumetricStress);
+  EXPECT_TRUE(mixed.restCouplingSolidDensity);
+  EXPECT_TRUE(read("compatibility: {couplingSolidDensity: rest}\n").restCouplingSolidDensity);
+}
+
+TEST(CompatibilitySettings, BadOrUnimplementedValuesAreInputErrorsWithLine) {
+  EXPECT_NE(errorOf("compatibility:\n  volumetricStress: unit\n").find("system/solverDict:2"), std::string::npos);
+  EXPECT_NE(errorOf("compatibility:\n  bloatingStres: absolute\n").find("did you mean 'bloatingStress'?"),
+            std::string::npos);
+  const std::string sweep = errorOf("compatibility:\n  pressureSweep: setSequential\n");
+  EXPECT_NE(sweep.find("system/solverDict:2"), std::string::npos) << sweep;
+  EXPECT_NE(sweep.find("only 'jacobi' is implemented"), std::string::npos) << sweep;
+  EXPECT_NO_THROW(read("compatibility:\n  pressureSweep: jacobi\n  pressureWarmStartCap: none\n"));
+}
+
+} // namespace
+} // namespace poro
