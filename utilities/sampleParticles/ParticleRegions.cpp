@@ -145,7 +145,7 @@ ParticleDict ParticleDict::read(const Dictionary& dict, const std::vector<Porous
   ParticleDict result;
   result.particleRadius = dict.getReal("particleRadius", Range::positive());
   std::vector<double> counts; // particles of each region, before any is sampled
-  bool hasFluid = false;
+  bool hasMatter = false; // a fluid or porous region: walls alone simulate nothing
   for (const Dictionary& region : dict.getDictList("regions")) {
     ParticleRegion r;
     r.name = region.getString("name");
@@ -153,7 +153,7 @@ ParticleDict ParticleDict::read(const Dictionary& dict, const std::vector<Porous
     r.phase = phase == "fluid"    ? ParticleRegion::Phase::Fluid
               : phase == "porous" ? ParticleRegion::Phase::Porous
                                   : ParticleRegion::Phase::Boundary;
-    hasFluid = hasFluid || r.phase == ParticleRegion::Phase::Fluid;
+    hasMatter = hasMatter || r.phase != ParticleRegion::Phase::Boundary;
     const std::string shape = r.phase != ParticleRegion::Phase::Boundary
                                   ? region.getWord("shape", {"box"})
                                   : region.getWord("shape", {"box", "container"});
@@ -183,8 +183,9 @@ ParticleDict ParticleDict::read(const Dictionary& dict, const std::vector<Porous
     result.regions.push_back(r);
   }
   dict.checkUnknownKeys();
-  if (!hasFluid)
-    dict.fail("regions", "no region has phase fluid; PoroSPH simulates a fluid, so add a region with phase: fluid");
+  if (!hasMatter)
+    dict.fail("regions", "no region has phase fluid or porous; walls alone have nothing to simulate, so add a "
+                         "region with phase: fluid or phase: porous");
   checkTotals(dict, result, counts);
   return result;
 }
