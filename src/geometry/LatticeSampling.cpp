@@ -54,18 +54,27 @@ double containerPointCount(const Vec3& min, const Vec3& max, double particleRadi
          inner[0] * inner[1] * (total[2] - inner[2]);
 }
 
+BoxLattice boxLattice(const Vec3& min, const Vec3& max, double particleRadius, long long extra) {
+  BoxLattice lattice;
+  lattice.spacing = 2.0 * particleRadius;
+  lattice.first = -extra;
+  for (int d = 0; d < 3; ++d) {
+    lattice.origin[d] = min[d] + particleRadius;
+    lattice.count[static_cast<std::size_t>(d)] =
+        std::max(0LL, latticeCount(max[d] - min[d], lattice.spacing)) + 2 * extra;
+  }
+  return lattice;
+}
+
 std::vector<Vec3> sampleBox(const Vec3& min, const Vec3& max, double particleRadius) {
-  const double spacing = 2.0 * particleRadius;
-  long long n[3];
-  for (int d = 0; d < 3; ++d) n[d] = std::max(0LL, latticeCount(max[d] - min[d], spacing));
+  const BoxLattice lattice = boxLattice(min, max, particleRadius);
+  const auto& n = lattice.count;
   std::vector<Vec3> points;
   points.reserve(static_cast<std::size_t>(n[0] * n[1] * n[2]));
   for (long long k = 0; k < n[2]; ++k)
     for (long long j = 0; j < n[1]; ++j)
       for (long long i = 0; i < n[0]; ++i)
-        points.emplace_back(min.x() + particleRadius + spacing * static_cast<double>(i),
-                            min.y() + particleRadius + spacing * static_cast<double>(j),
-                            min.z() + particleRadius + spacing * static_cast<double>(k));
+        points.emplace_back(lattice.coordinate(0, i), lattice.coordinate(1, j), lattice.coordinate(2, k));
   return points;
 }
 

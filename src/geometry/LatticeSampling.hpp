@@ -13,6 +13,21 @@ namespace poro {
 /// Number of lattice points along an edge of length `length` at `spacing` = 2r.
 long long latticeCount(double length, double spacing);
 
+/// The lattice sampleBox fills [min, max] with, for samplers that walk it row by row (closed surfaces): point
+/// (i, j, k) is at origin + spacing (i, j, k), for indices first <= i < first + count[0] (likewise j, k).
+struct BoxLattice {
+  Vec3 origin = Vec3::Zero();       ///< min + r: the centre of point (0, 0, 0)
+  double spacing = 0.0;             ///< 2r
+  long long first = 0;              ///< index of the first point on every axis: 0, or -extra
+  std::array<long long, 3> count{}; ///< points per axis
+
+  double coordinate(int axis, long long index) const { return origin[axis] + spacing * static_cast<double>(index); }
+};
+
+/// The lattice of sampleBox(min, max, particleRadius), grown by `extra` points beyond every face (wall bodies
+/// outside a surface), so that the grown lattice continues the box's own.
+BoxLattice boxLattice(const Vec3& min, const Vec3& max, double particleRadius, long long extra = 0);
+
 /// Lattice points filling the box [min, max].
 std::vector<Vec3> sampleBox(const Vec3& min, const Vec3& max, double particleRadius);
 

@@ -1,12 +1,15 @@
 #include "ParticleRegions.hpp"
 
 #include "core/Dictionary.hpp"
+#include "core/Error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include <unistd.h>
@@ -58,9 +61,15 @@ double physicalMemoryBytes() {
   return pages > 0 && pageSize > 0 ? static_cast<double>(pages) * static_cast<double>(pageSize) : 0.0;
 }
 
+/// Boxes and containers exactly; spheres and surfaces estimated from their volume, or as walls from the shell of
+/// their thickness (layers 2r) over their area, which is all the checks of the totals need.
 double pointCount(const ParticleRegion& r, double radius) {
-  return r.shape == ParticleRegion::Shape::Box ? boxPointCount(r.min, r.max, radius)
-                                               : containerPointCount(r.min, r.max, radius, r.layers, r.open);
+  if (r.shape == ParticleRegion::Shape::Box) return boxPointCount(r.min, r.max, radius);
+  if (r.shape == ParticleRegion::Shape::Container) return containerPointCount(r.min, r.max, radius, r.layers, r.open);
+  const double cell = std::pow(2.0 * radius, 3);
+  if (r.phase != ParticleRegion::Phase::Boundary) return r.body->volume() / cell;
+  const double shell = r.body->area() * r.layers * 2.0 * radius;
+  return (r.side == WallSide::Inside ? std::min(shell, r.body->volume()) : shell) / cell;
 }
 
 /// A region that samples to no particle is a mistake the user would otherwise only see as a missing body.
@@ -131,6 +140,27 @@ std::size_t readMaterial(const Dictionary& region, const std::vector<PorousMater
   region.fail("material", "unknown material '" + name + "'; constant/porosityProperties defines: " + defined);
 }
 
+ParticleRegion::Shape readShape(const Dictionary& region, ParticleRegion::Phase phase) {
+  const std::string shape = phase != ParticleRegion::Phase::Boundary
+                                ? region.getWord("shape", {"box", "sphere", "surface"})
+                                : region.getWord("shape", {"box", "container", "sphere", "surface"});
+  return shape == "box"         ? ParticleRegion::Shape::Box
+         : shape == "container" ? ParticleRegion::Shape::Container
+         : shape == "sphere"    ? ParticleRegion::Shape::Sphere
+                                : ParticleRegion::Shape::Surface;
+}
+
+void readBox(const Dictionary& region, ParticleRegion& r) {
+  r.min = region.getVec3("min");
+  r.max = region.getVec3("max");
+  for (int d = 0; d < 3; ++d)
+    if (!(r.min[d] < r.max[d])) {
+      std::ostringstream msg;
+      msg << "expected max > min on every axis, got min " << format(r.min) << ", max " << format(r.max);
+      region.fail("max", msg.str());
+    }
+}
+
 FaceFlags readOpenFaces(const Dictionary& region) {
   FaceFlags open{};
   for (const std::string& face : region.getWordList("open", kFaces))
@@ -139,9 +169,38 @@ FaceFlags readOpenFaces(const Dictionary& region) {
   return open;
 }
 
+/// layers and open of a container; layers and side of a boundary sphere or surface (a wall body).
+void readWallKeys(const Dictionary& region, ParticleRegion& r) {
+  const bool wallBody = r.phase == ParticleRegion::Phase::Boundary &&
+                        (r.shape == ParticleRegion::Shape::Sphere || r.shape == ParticleRegion::Shape::Surface);
+  if (r.shape == ParticleRegion::Shape::Container || wallBody)
+    r.layers = static_cast<int>(region.getInt("layers", 2, Range::closed(1, 100)));
+  if (r.shape == ParticleRegion::Shape::Container) r.open = readOpenFaces(region);
+  if (wallBody)
+    r.side = region.getWord("side", {"inside", "outside"}, "inside") == "inside" ? WallSide::Inside : WallSide::Outside;
+}
+
 } // namespace
 
-ParticleDict ParticleDict::read(const Dictionary& dict, const std::vector<PorousMaterial>& materials) {
+std::vector<Vec3> ParticleRegion::sample(double particleRadius) const {
+  if (shape == Shape::Box) return sampleBox(min, max, particleRadius);
+  if (shape == Shape::Container) return sampleContainer(min, max, particleRadius, layers, open);
+  const bool wall = phase == Phase::Boundary;
+  std::vector<Vec3> points =
+      wall ? sampleWallBody(*body, particleRadius, layers, side) : sampleInside(*body, particleRadius);
+  if (points.empty()) {
+    std::ostringstream msg;
+    msg << where << ": region '" << name
+        << "' holds no particle: no point of the lattice of spacing 2 particleRadius = " << 2.0 * particleRadius
+        << " m lies " << (wall ? "in its wall" : "inside its surface") << " (bounding box from "
+        << format(body->boxMin()) << " to " << format(body->boxMax()) << "); make particleRadius smaller";
+    throw InputError(msg.str());
+  }
+  return points;
+}
+
+ParticleDict ParticleDict::read(const Dictionary& dict, const std::vector<PorousMaterial>& materials,
+                                const std::filesystem::path& surfaceDirectory) {
   ParticleDict result;
   result.particleRadius = dict.getReal("particleRadius", Range::positive());
   std::vector<double> counts; // particles of each region, before any is sampled
@@ -154,32 +213,27 @@ ParticleDict ParticleDict::read(const Dictionary& dict, const std::vector<Porous
               : phase == "porous" ? ParticleRegion::Phase::Porous
                                   : ParticleRegion::Phase::Boundary;
     hasMatter = hasMatter || r.phase != ParticleRegion::Phase::Boundary;
-    const std::string shape = r.phase != ParticleRegion::Phase::Boundary
-                                  ? region.getWord("shape", {"box"})
-                                  : region.getWord("shape", {"box", "container"});
-    r.shape = shape == "box" ? ParticleRegion::Shape::Box : ParticleRegion::Shape::Container;
-    r.min = region.getVec3("min");
-    r.max = region.getVec3("max");
-    for (int d = 0; d < 3; ++d)
-      if (!(r.min[d] < r.max[d])) {
-        std::ostringstream msg;
-        msg << "expected max > min on every axis, got min " << format(r.min) << ", max " << format(r.max);
-        region.fail("max", msg.str());
-      }
+    r.shape = readShape(region, r.phase);
+    r.where = region.where("shape");
+    std::optional<SurfaceSource> surface;
+    if (r.shape == ParticleRegion::Shape::Sphere)
+      r.body = readSphere(region);
+    else if (r.shape == ParticleRegion::Shape::Surface)
+      surface = readSurfaceKeys(region, surfaceDirectory);
+    else
+      readBox(region, r);
     if (r.phase != ParticleRegion::Phase::Boundary) r.velocity = region.getVec3("velocity", Vec3::Zero());
     if (r.phase == ParticleRegion::Phase::Porous) {
       r.materialId = readMaterial(region, materials);
       r.fixed = region.getBool("fixed", false);
     }
-    if (r.shape == ParticleRegion::Shape::Container) {
-      r.layers = static_cast<int>(region.getInt("layers", 2, Range::closed(1, 100)));
-      r.open = readOpenFaces(region);
-    }
+    readWallKeys(region, r);
     region.checkUnknownKeys();
     for (const ParticleRegion& other : result.regions)
       if (other.name == r.name) region.fail("name", "region name '" + r.name + "' is used twice");
+    if (surface) r.body = loadSurface(*surface);
     counts.push_back(pointCount(r, result.particleRadius));
-    checkNotEmpty(region, r, result.particleRadius, counts.back());
+    if (!r.body) checkNotEmpty(region, r, result.particleRadius, counts.back()); // spheres, surfaces: in sample()
     result.regions.push_back(r);
   }
   dict.checkUnknownKeys();

@@ -9,6 +9,7 @@
 #include "io/TimeDirectory.hpp"
 #include "physics/FieldNames.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -47,7 +48,8 @@ int main(int argc, char* argv[]) try {
   const Arguments args(argc, argv, "sampleParticles",
                        "Samples the regions of system/particleDict into particles and writes the initial time\n"
                        "directory 0/ (fluid.vtp, porous.vtp, boundary.vtp, uniform/time) and case.pvd. Porous regions\n"
-                       "name a material of constant/porosityProperties.");
+                       "name a material of constant/porosityProperties; surface regions name a closed surface\n"
+                       "of constant/triSurface (STL, OBJ, OFF or PLY).");
   if (args.help()) {
     std::cout << args.usage();
     return 0;
@@ -56,7 +58,8 @@ int main(int argc, char* argv[]) try {
   if (!fs::is_directory(caseDir)) throw InputError(caseDir.string() + ": case directory not found");
   const std::string dictPath = (caseDir / "system" / "particleDict").string();
   const std::vector<PorousMaterial> materials = readPorousMaterials(caseDir);
-  const ParticleDict dict = ParticleDict::read(Dictionary::read(dictPath), materials);
+  const ParticleDict dict =
+      ParticleDict::read(Dictionary::read(dictPath), materials, caseDir / "constant" / "triSurface");
   const bool binary = [&] {
     const fs::path control = caseDir / "system" / "controlDict";
     if (!fs::exists(control)) return true;
@@ -81,10 +84,7 @@ int main(int argc, char* argv[]) try {
   long long nextId = 0; // ids are unique over all particles of the case
   for (std::size_t r = 0; r < dict.regions.size(); ++r) {
     const ParticleRegion& region = dict.regions[r];
-    const std::vector<Vec3> points =
-        region.shape == ParticleRegion::Shape::Box
-            ? sampleBox(region.min, region.max, dict.particleRadius)
-            : sampleContainer(region.min, region.max, dict.particleRadius, region.layers, region.open);
+    const std::vector<Vec3> points = region.sample(dict.particleRadius);
     ParticleSet* target = region.phase == ParticleRegion::Phase::Fluid    ? &fluid
                           : region.phase == ParticleRegion::Phase::Porous ? porous[region.materialId]
                                                                           : boundary;
@@ -100,6 +100,8 @@ int main(int argc, char* argv[]) try {
       }
       line << " of material " << materials[region.materialId].name << (region.fixed ? ", fixed" : "");
     }
+    if (region.body && region.phase != ParticleRegion::Phase::Boundary) // how well the lattice fills the body
+      line << " (enclosed volume / (2r)^3 = " << region.body->volume() / std::pow(2.0 * dict.particleRadius, 3) << ")";
     log::info(line.str());
   }
 
