@@ -29,10 +29,12 @@ int main(int argc, char* argv[]) try {
   banner << "Case: " << args.caseDir() << "\nStarting from time " << simulation.startName << " with "
          << simulation.particles.particleCount() << " particles";
   log::info(banner.str());
+  const bool movingWalls = !simulation.wallMotions.empty();
   Solver solver(std::move(simulation.particles), simulation.fluid, std::move(simulation.materials), simulation.solver,
-                simulation.control, simulation.start);
+                simulation.control, simulation.start, std::move(simulation.wallMotions));
   log::info("Threads: " + std::to_string(parallel::threads()));
   TimeWriter writer(args.caseDir(), simulation.output, simulation.startName);
+  writer.setMovingWalls(movingWalls);
   if (const char* step = std::getenv("POROSPH_INJECT_NAN_STEP")) { // tests the health checks end to end
     solver.injectNaN(std::atoll(step));
     log::warning(std::string("POROSPH_INJECT_NAN_STEP: one particle's velocity becomes NaN in step ") + step);

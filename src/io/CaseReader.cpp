@@ -17,6 +17,23 @@ double readParticleRadius(const fs::path& caseDir) {
   return dict.getReal("particleRadius", Range::positive());
 }
 
+std::vector<ObjectMotion> readWallMotions(const fs::path& caseDir) {
+  const Dictionary dict = Dictionary::read((caseDir / "system" / "particleDict").string());
+  std::vector<ObjectMotion> motions;
+  if (!dict.has("regions")) return motions; // sampleParticles reports it
+  const std::vector<Dictionary> regions = dict.getDictList("regions");
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    const auto motion = regions[r].optionalSubDict("motion");
+    if (!motion) continue;
+    if (regions[r].getString("phase") != "boundary")
+      regions[r].fail("motion", "only walls (phase: boundary) have a prescribed motion; fluid and porous "
+                                "particles move by the physics (give them an initial velocity instead)");
+    motions.push_back({static_cast<long long>(r), regions[r].getString("name"), regions[r].where("motion"),
+                       WallMotion::read(*motion)});
+  }
+  return motions;
+}
+
 std::vector<PorousMaterial> readPorousMaterials(const fs::path& caseDir) {
   const fs::path path = caseDir / "constant" / "porosityProperties";
   if (!fs::exists(path)) return {};
@@ -55,6 +72,7 @@ SimulationCase readCase(const fs::path& caseDir, int threads) {
       FluidProperties::read(Dictionary::read((caseDir / "constant" / "fluidProperties").string()));
   std::vector<PorousMaterial> materials = readPorousMaterials(caseDir);
   const double radius = readParticleRadius(caseDir);
+  std::vector<ObjectMotion> wallMotions = readWallMotions(caseDir);
 
   const auto controlDictError = [&](const std::string& key, const std::string& message) {
     Dictionary::read((caseDir / "system" / "controlDict").string()).fail(key, message); // for the line
@@ -81,7 +99,8 @@ SimulationCase readCase(const fs::path& caseDir, int threads) {
   ParticleSystem particles = readParticles(caseDir, startName, radius, materials);
   if (start.time >= control.endTime)
     controlDictError("endTime", "expected endTime > the start time " + startName + ", got " + timeName(control.endTime));
-  return SimulationCase{control, output, solver, fluid, std::move(materials), startName, start, std::move(particles)};
+  return SimulationCase{control,   output, solver, fluid, std::move(materials), startName, start, std::move(particles),
+                        std::move(wallMotions)};
 }
 
 } // namespace poro

@@ -25,6 +25,7 @@ struct SimulationCase {
   std::string startName;                 ///< the time directory the run starts from
   RunState start;
   ParticleSystem particles;
+  std::vector<ObjectMotion> wallMotions; ///< the `motion:` blocks of system/particleDict's boundary regions
 };
 
 /// `threads` > 0 overrides solverDict's threads (-threads on the command line).
@@ -32,6 +33,10 @@ SimulationCase readCase(const std::filesystem::path& caseDir, int threads = 0);
 
 /// particleRadius of system/particleDict (the one key the solver needs from it).
 double readParticleRadius(const std::filesystem::path& caseDir);
+
+/// The `motion:` blocks of system/particleDict (physics/WallMotion.hpp), validated, with the object id each
+/// region's particles carry (its index in `regions`). Only boundary regions may move.
+std::vector<ObjectMotion> readWallMotions(const std::filesystem::path& caseDir);
 
 /// The porous materials of constant/porosityProperties, validated (PorousMaterial::readAll), in file order;
 /// empty when the case has no such file (a fluid-only case).

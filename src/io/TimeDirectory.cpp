@@ -293,7 +293,7 @@ void TimeWriter::write(const ParticleSystem& particles, const RunState& state) {
   const std::string name = timeName(state.time);
   std::vector<std::string> parts;
   writeDirectoryAtomically(caseDir_, name, [&](const fs::path& dir) {
-    parts = writeSets(dir, particles, false, settings_.binary);
+    parts = writeSets(dir, particles, movingWalls_, settings_.binary);
     writeRunState(dir, state, particles.particleRadius());
   });
   for (const std::string& part : parts) series_.add(state.time, part, name + "/" + part + ".vtp");

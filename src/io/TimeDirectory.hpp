@@ -47,9 +47,11 @@ public:
   /// Starts the series at the time directory `startName` (entries after it are dropped from case.pvd).
   TimeWriter(std::filesystem::path caseDir, const OutputSettings& settings, const std::string& startName);
 
-  /// Writes `<t>/` for the dynamic sets (fluid.vtp, porous.vtp) and uniform/time, atomically, then case.pvd
-  /// (one part per file: "fluid", "porous") and purgeWrite.
+  /// Writes `<t>/` for the dynamic sets (fluid.vtp, porous.vtp), with moving walls also boundary.vtp, and
+  /// uniform/time, atomically, then case.pvd (one part per file: "fluid", "porous", "boundary") and purgeWrite.
   void write(const ParticleSystem& particles, const RunState& state);
+  /// Walls move (prescribed motion): every time directory gets boundary.vtp, which a restart reads back.
+  void setMovingWalls(bool moving) { movingWalls_ = moving; }
   /// New writeFormat / purgeWrite from a re-read system/controlDict; the next write uses them.
   void setSettings(const OutputSettings& settings) { settings_ = settings; }
 
@@ -63,6 +65,7 @@ private:
   std::filesystem::path caseDir_;
   OutputSettings settings_;
   PvdSeries series_;
+  bool movingWalls_ = false;
 };
 
 } // namespace poro

@@ -48,10 +48,12 @@ std::string formatDuration(double seconds) {
 } // namespace
 
 Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vector<PorousMaterial> materials,
-               const SolverSettings& settings, const TimeControl& control, const RunState& start)
+               const SolverSettings& settings, const TimeControl& control, const RunState& start,
+               std::vector<ObjectMotion> wallMotions)
     : particles_(std::move(particles)), fluid_(fluid), materials_(std::move(materials)), settings_(settings),
       control_(control), state_(start), kernel_(particles_.supportRadius()), search_(particles_.supportRadius()),
-      implicit_(settings.implicit, makeImplicitTerms()), pressure_(settings.pressure) {
+      implicit_(settings.implicit, makeImplicitTerms()), pressure_(settings.pressure),
+      wallMotions_(std::move(wallMotions)) {
   if (settings_.threads > 0) parallel::setThreads(settings_.threads);
   const double volume = particles_.particleVolume();
   setMaterials_.assign(particles_.size(), nullptr);
@@ -70,10 +72,7 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
       ++fluidSets;
       break;
     case SetKind::Boundary:
-      // Walls are static; one Morton sort makes their order (and so every sum over them) a function of
-      // their positions alone, identical after a restart.
-      set.permute(search_.mortonOrder(set.x()));
-      computeBoundaryVolumes(set, kernel_);
+      setUpBoundarySet(set);
       boundarySets_.push_back(s);
       break;
     case SetKind::Porous: {
@@ -93,6 +92,18 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
   }
   if (fluidSets > 1) throw InputError("more than one fluid particle set; PoroSPH simulates one fluid");
   if (state_.nextDeltaT <= 0.0) state_.nextDeltaT = control_.deltaT;
+  for (const ObjectMotion& m : wallMotions_) {
+    std::size_t n = 0;
+    for (std::size_t k : boundarySets_) {
+      const auto& object = particles_[k].integer(field::objectId);
+      n += static_cast<std::size_t>(std::count(object.begin(), object.end(), m.objectId));
+    }
+    if (n == 0)
+      throw InputError(m.where + ": region '" + m.region + "' has a motion, but the walls of the start time " +
+                       "directory hold no particle of it (object id " + std::to_string(m.objectId) +
+                       "); run sampleParticles again (it rewrites 0/) and start from 0");
+  }
+  placeWalls(state_.time, state_.nextDeltaT);
   domain_ = settings_.health.domain ? settings_.health.domain : wallDomain(particles_, boundarySets_);
 }
 
@@ -101,6 +112,38 @@ void Solver::setTimeControl(const TimeControl& control) {
   state_.nextDeltaT = control_.adjustTimeStep
                           ? std::clamp(state_.nextDeltaT, control_.minDeltaT, control_.maxDeltaT)
                           : control_.deltaT;
+}
+
+void Solver::setUpBoundarySet(ParticleSet& set) {
+  if (!wallMotions_.empty()) { // moving walls: everything below is done at the rest position X
+    const bool restart = set.has(field::restPosition);
+    auto& rest = set.addVec3(field::restPosition, Restart);
+    if (!restart) rest = set.x();
+    set.x() = rest;
+  }
+  // One Morton sort makes the walls' order (and so every sum over them) a function of their rest positions
+  // alone, identical after a restart. Their volumes stay right under the rigid motion of each body.
+  set.permute(search_.mortonOrder(set.x()));
+  computeBoundaryVolumes(set, kernel_);
+}
+
+void Solver::placeWalls(double t, double deltaT) {
+  for (const ObjectMotion& m : wallMotions_) {
+    const Vec3 d = m.motion.displacement(t);
+    const Vec3 u = m.motion.meanVelocity(t, deltaT);
+    for (std::size_t k : boundarySets_) {
+      ParticleSet& set = particles_[k];
+      const auto& object = set.integer(field::objectId);
+      const auto& rest = set.vec3(field::restPosition);
+      auto& x = set.x();
+      auto& v = set.v();
+      parallel::forEach(set.size(), [&](std::size_t i) {
+        if (object[i] != m.objectId) return;
+        x[i] = rest[i] + d;
+        v[i] = u;
+      });
+    }
+  }
 }
 
 void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
@@ -143,6 +186,7 @@ void Solver::searchNeighbours() {
 
 StepContext Solver::beginStep(double deltaT) {
   StepContext ctx = context(deltaT);
+  placeWalls(state_.time, deltaT);
   {
     ScopedPhase phase(phases_, "search");
     searchNeighbours();
@@ -185,6 +229,7 @@ void Solver::step(double deltaT) {
     report_.maxSpeed = maxSpeed();
     state_.nextDeltaT =
         cflStepSize(control_, report_.maxSpeed, particles_.spacing(), deltaT, report_.pressure.iterations);
+    placeWalls(state_.time, state_.nextDeltaT); // written time directories show the walls where they are
   }
 }
 

@@ -13,6 +13,7 @@
 #include "physics/StateSnapshot.hpp"
 #include "physics/StepContext.hpp"
 #include "physics/TimeControl.hpp"
+#include "physics/WallMotion.hpp"
 
 #include <functional>
 #include <memory>
@@ -40,9 +41,12 @@ struct RunOutcome {
 class Solver {
 public:
   /// Takes the particles of a case (loaded from 0/ or a restart time directory) and validated settings.
-  /// Each porous set is named after its material in `materials` (constant/porosityProperties).
+  /// Each porous set is named after its material in `materials` (constant/porosityProperties). Walls whose
+  /// object id has an entry in `wallMotions` move as prescribed; the others stay where they are. Throws
+  /// InputError when a motion's object has no wall particle.
   Solver(ParticleSystem particles, const FluidProperties& fluid, std::vector<PorousMaterial> materials,
-         const SolverSettings& settings, const TimeControl& control, const RunState& start);
+         const SolverSettings& settings, const TimeControl& control, const RunState& start,
+         std::vector<ObjectMotion> wallMotions = {});
 
   /// Called at each write time and at the end; receives the solver to read particles and state from.
   using Writer = std::function<void(const Solver&)>;
@@ -90,6 +94,9 @@ private:
   double endSlack() const;
 
   void setUpPorousSet(ParticleSet& set, const PorousMaterial& material);
+  void setUpBoundarySet(ParticleSet& set);
+  /// Moving walls to X + d(t), with the velocity that carries them to X + d(t + deltaT).
+  void placeWalls(double t, double deltaT);
 
   ParticleSystem particles_;
   FluidProperties fluid_;
@@ -104,6 +111,7 @@ private:
   std::vector<std::size_t> dynamicSets_, boundarySets_;
   ImplicitSolver implicit_;
   PressureSolver pressure_;
+  std::vector<ObjectMotion> wallMotions_;
   StepReport report_;
   PhaseTimes phases_;
   StateSnapshot snapshot_;         ///< before the current step: undoes a step that ends in NaN

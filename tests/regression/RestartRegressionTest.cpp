@@ -114,5 +114,46 @@ TEST(Restart, PorousRunRestartsBitForBit) {
   EXPECT_NE(split.read("case.pvd").find("0.1/porous.vtp"), std::string::npos);
 }
 
+void addPaddle(CaseRunner& runner) {
+  // A wall moving into the water from the far side, stopping inside the restart interval.
+  runner.replace("system/particleDict", "    layers: 2\n",
+                 "    layers: 2\n"
+                 "  - name: paddle\n"
+                 "    phase: boundary\n"
+                 "    shape: box\n"
+                 "    min: [0.3, -0.0005, -0.0005]\n"
+                 "    max: [0.34, 0.2, 0.0405]\n"
+                 "    motion:\n"
+                 "      table:\n"
+                 "        - {time: 0.02, displacement: [0, 0, 0]}\n"
+                 "        - {time: 0.07, displacement: [-0.05, 0, 0]}\n");
+}
+
+TEST(Restart, MovingWallRunRestartsBitForBit) {
+  // A paddle pushes into the dam break; the restart reads it displaced from 0.05/boundary.vtp.
+  CaseRunner straight("fluid/damBreak");
+  makeSmallDamBreak(straight, "0.1");
+  addPaddle(straight);
+  ASSERT_EQ(straight.sample(), 0) << straight.read("log.sampleParticles");
+  ASSERT_EQ(straight.solve("-threads 2"), 0) << straight.read("log.poroSph");
+
+  CaseRunner split("fluid/damBreak");
+  makeSmallDamBreak(split, "0.05");
+  addPaddle(split);
+  ASSERT_EQ(split.sample(), 0);
+  ASSERT_EQ(split.solve("-threads 2"), 0) << split.read("log.poroSph");
+  split.setKey("system/controlDict", "endTime", "0.1");
+  std::filesystem::remove(split.dir() / "log.poroSph");
+  ASSERT_EQ(split.solve("-threads 1"), 0) << split.read("log.poroSph");
+
+  const ParticleSystem a = straight.particles("0.1", 0.005);
+  const ParticleSystem b = split.particles("0.1", 0.005);
+  expectIdentical(*a.find("fluid"), *b.find("fluid"));
+  expectIdentical(*a.find("boundary"), *b.find("boundary"));
+  // Every time directory holds the walls where they were, and case.pvd lists them for ParaView.
+  EXPECT_TRUE(std::filesystem::exists(split.dir() / "0.05" / "boundary.vtp"));
+  EXPECT_NE(split.read("case.pvd").find("0.1/boundary.vtp"), std::string::npos);
+}
+
 } // namespace
 } // namespace poro::test

@@ -169,8 +169,15 @@ FaceFlags readOpenFaces(const Dictionary& region) {
   return open;
 }
 
-/// layers and open of a container; layers and side of a boundary sphere or surface (a wall body).
+/// layers and open of a container; layers and side of a boundary sphere or surface (a wall body); the motion
+/// of any wall.
 void readWallKeys(const Dictionary& region, ParticleRegion& r) {
+  if (const auto motion = region.optionalSubDict("motion")) {
+    if (r.phase != ParticleRegion::Phase::Boundary)
+      region.fail("motion", "only walls (phase: boundary) have a prescribed motion; fluid and porous particles "
+                            "move by the physics (give them an initial velocity instead)");
+    r.motion = WallMotion::read(*motion);
+  }
   const bool wallBody = r.phase == ParticleRegion::Phase::Boundary &&
                         (r.shape == ParticleRegion::Shape::Sphere || r.shape == ParticleRegion::Shape::Surface);
   if (r.shape == ParticleRegion::Shape::Container || wallBody)

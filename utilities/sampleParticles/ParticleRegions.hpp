@@ -17,9 +17,11 @@
 #include "geometry/LatticeSampling.hpp"
 #include "geometry/ShapeSampling.hpp"
 #include "physics/PorousMaterial.hpp"
+#include "physics/WallMotion.hpp"
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +43,7 @@ struct ParticleRegion {
   int layers = 2;                              ///< wall layers of a container, or of a boundary sphere or surface
   FaceFlags open{};                            ///< faces of a container without wall
   WallSide side = WallSide::Inside;            ///< boundary sphere or surface: which side of it the wall lies on
+  std::optional<WallMotion> motion;            ///< boundary: prescribed motion (the solver reads it again)
 
   /// The region's particle positions. A sphere or surface that holds no lattice point is an InputError.
   std::vector<Vec3> sample(double particleRadius) const;

@@ -100,6 +100,7 @@ int main(int argc, char* argv[]) try {
       }
       line << " of material " << materials[region.materialId].name << (region.fixed ? ", fixed" : "");
     }
+    if (region.motion) line << ", moving (prescribed, at most " << region.motion->maxSpeed() << " m/s)";
     if (region.body && region.phase != ParticleRegion::Phase::Boundary) // how well the lattice fills the body
       line << " (enclosed volume / (2r)^3 = " << region.body->volume() / std::pow(2.0 * dict.particleRadius, 3) << ")";
     log::info(line.str());
