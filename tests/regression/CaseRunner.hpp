@@ -31,7 +31,7 @@ struct CaseSource {
 class CaseRunner {
 public:
   /// Copies tutorials/<tutorial> to a fresh scratch directory named after the running test (or `name`
-  /// outside a test, e.g. in SetUpTestSuite).
+  /// outside a test, e.g. in SetUpTestSuite) and numbered, so that two runners of one test never share it.
   explicit CaseRunner(const std::string& tutorial, std::string name = "")
       : CaseRunner(CaseSource{std::filesystem::path(POROSPH_TUTORIALS) / tutorial}, std::move(name)) {}
 
@@ -41,7 +41,9 @@ public:
       name = std::string(info->test_suite_name()) + "_" + info->name();
     for (char& c : name)
       if (c == '/') c = '_';
-    dir_ = std::filesystem::temp_directory_path() / ("porosph_" + name + "_" + std::to_string(::getpid()));
+    static int created = 0;
+    dir_ = std::filesystem::temp_directory_path() /
+           ("porosph_" + name + "_" + std::to_string(::getpid()) + "_" + std::to_string(++created));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
     std::filesystem::copy(source.dir, dir_, std::filesystem::copy_options::recursive);
