@@ -83,7 +83,8 @@ void writeRunState(const fs::path& dir, const RunState& state, double particleRa
   std::ostringstream out;
   out << "# Run state of this time directory (restart: startFrom latestTime).\n"
       << "time: " << formatExact(state.time) << "\nstep: " << state.step
-      << "\ndeltaT: " << formatExact(state.nextDeltaT) << "  # the step size of the coming step [s]\n";
+      << "\ndeltaT: " << formatExact(state.nextDeltaT) << "  # the step size of the coming step [s]\n"
+      << "lastDeltaT: " << formatExact(state.lastDeltaT) << "  # the step size of the step before [s]\n";
   // The radius the particles were sampled with, so that an edited particleDict cannot silently mismatch them.
   if (particleRadius > 0.0)
     out << "particleRadius: " << formatExact(particleRadius) << "  # [m], must equal system/particleDict's\n";
@@ -217,6 +218,7 @@ RunState readRunState(const fs::path& timeDir) {
   state.time = dict.getReal("time", Range::nonNegative());
   state.step = dict.getInt("step", Range::nonNegative());
   state.nextDeltaT = dict.getReal("deltaT", Range::nonNegative()); // 0: take controlDict deltaT
+  state.lastDeltaT = dict.getReal("lastDeltaT", 0.0, Range::nonNegative()); // 0: none (also older directories)
   dict.getReal("particleRadius", 0.0, Range::positive());          // checked against particleDict by readParticles
   dict.checkUnknownKeys();
   // The directory name is what startTime, latestTime and case.pvd go by; a run must not start elsewhere.

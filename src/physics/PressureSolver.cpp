@@ -6,6 +6,7 @@
 #include "sph/BoundaryVolume.hpp"
 
 #include <algorithm>
+#include <functional>
 
 namespace poro {
 
@@ -82,11 +83,11 @@ double partnerProjection(const std::vector<PartnerView>& partners, const Vec3& x
 }
 } // namespace
 
-void PressureSolver::registerFields(ParticleSet& set) {
+void PressureSolver::registerFields(ParticleSet& set, const CompatibilitySettings& compatibility) {
   set.addReal(field::pi, Restart);
   set.addReal(field::pressure, Output);
   set.addReal(field::rhoStar);
-  set.addVec3(field::accelP);
+  set.addVec3(field::accelP, compatibility.setSequentialPressure ? Restart : Scratch);
   set.addReal(kResidual);
 }
 
@@ -119,10 +120,10 @@ void PressureSolver::predictDensities(const StepContext& ctx) const {
   }
 }
 
-void PressureSolver::computeAccelerations(const StepContext& ctx) const {
+void PressureSolver::computeAccelerations(const StepContext& ctx, const std::vector<std::size_t>& sets) const {
   // a^p_a = -pi_a G_a - V sum_b h_ab pi_b s_ab x_ab: the pi_a part of every pair and wall term is pi_a G_a;
   // h_ab is 0 across phases (Eq. 7 line 2, walls are one-sided), f(b<-a) m_b/m_a within one (Eq. 7, 8).
-  for (std::size_t a : ctx.dynamicSets) {
+  for (std::size_t a : sets) {
     ParticleSet& set = ctx.particles[a];
     const auto& x = set.x();
     const auto& pi = set.real(field::pi);
@@ -160,7 +161,11 @@ void PressureSolver::computeAccelerations(const StepContext& ctx) const {
 }
 
 std::vector<std::vector<double>> PressureSolver::applyOperator(const StepContext& ctx) const {
-  computeAccelerations(ctx);
+  computeAccelerations(ctx, ctx.dynamicSets);
+  return operatorOfStoredAccelerations(ctx);
+}
+
+std::vector<std::vector<double>> PressureSolver::operatorOfStoredAccelerations(const StepContext& ctx) const {
   std::vector<std::vector<double>> result;
   for (std::size_t a : ctx.dynamicSets) {
     const ParticleSet& set = ctx.particles[a];
@@ -179,28 +184,39 @@ std::vector<std::vector<double>> PressureSolver::applyOperator(const StepContext
   return result;
 }
 
-PressureStats PressureSolver::solve(const StepContext& ctx) const {
+void PressureSolver::warmStart(const StepContext& ctx) const {
+  // The reference cap bounds pi dt^2 (its stored pressure) by 2.5e-4 m^2 before rescaling to this step's dt.
+  constexpr double kReferenceCap = 2.5e-4; // [m^2]
+  const bool capped = ctx.compatibility.cappedPressureWarmStart;
   const double dt = ctx.dt;
-  const double dt2 = dt * dt;
-  const double omega = settings_.relaxation;
-  const double tolerance = settings_.maxDensityError / 100.0;
-
-  for (std::size_t a : ctx.dynamicSets) { // warm start (METHOD.md §6.7); Fixed particles keep pi = 0
+  const double previousDt = ctx.previousDt > 0.0 ? ctx.previousDt : dt;
+  const double factor = settings_.warmStart;
+  for (std::size_t a : ctx.dynamicSets) { // Fixed particles keep pi = 0
     ParticleSet& set = ctx.particles[a];
     auto& pi = set.real(field::pi);
     const auto& rhoStar = set.real(field::rhoStar);
     const std::int64_t* fixed = fixedFlags(set);
-    const double factor = settings_.warmStart;
-    parallel::forEach(set.size(),
-                      [&](std::size_t i) { pi[i] = rhoStar[i] > 1.0 && !(fixed && fixed[i]) ? factor * pi[i] : 0.0; });
+    parallel::forEach(set.size(), [&](std::size_t i) {
+      if (!(rhoStar[i] > 1.0) || (fixed && fixed[i]))
+        pi[i] = 0.0;
+      else if (capped)
+        pi[i] = factor * std::min(pi[i] * previousDt * previousDt, kReferenceCap) / (dt * dt);
+      else
+        pi[i] *= factor;
+    });
   }
+}
 
+PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<std::size_t>& sets) const {
+  const double dt2 = ctx.dt * ctx.dt;
+  const double omega = settings_.relaxation;
+  const double tolerance = settings_.maxDensityError / 100.0;
   PressureStats stats;
   for (int it = 1; it <= settings_.maxIterations; ++it) {
-    computeAccelerations(ctx);
+    computeAccelerations(ctx, sets);
     // Residuals use a^p of the sweep's start only, so updating pi set by set is pure Jacobi across sets.
     double worstMean = 0.0, worstMax = 0.0;
-    for (std::size_t a : ctx.dynamicSets) {
+    for (std::size_t a : sets) {
       ParticleSet& set = ctx.particles[a];
       const auto& x = set.x();
       const auto& object = set.integer(field::objectId);
@@ -241,8 +257,35 @@ PressureStats PressureSolver::solve(const StepContext& ctx) const {
       break;
     }
   }
+  computeAccelerations(ctx, sets);
+  return stats;
+}
 
-  computeAccelerations(ctx);
+PressureStats PressureSolver::solve(const StepContext& ctx) const {
+  warmStart(ctx);
+  PressureStats stats;
+  if (ctx.compatibility.setSequentialPressure) {
+    // Fluid first, then the porous sets by material; materials point into one vector in file order.
+    std::vector<std::size_t> order = ctx.dynamicSets;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      const PorousMaterial* ma = ctx.materials[a];
+      const PorousMaterial* mb = ctx.materials[b];
+      if (!ma || !mb) return !ma && mb;
+      return std::less<const PorousMaterial*>()(ma, mb);
+    });
+    stats.converged = true;
+    for (std::size_t a : order) {
+      const PressureStats one = iterate(ctx, {a});
+      stats.iterations = std::max(stats.iterations, one.iterations);
+      stats.meanError = std::max(stats.meanError, one.meanError);
+      stats.maxError = std::max(stats.maxError, one.maxError);
+      stats.converged = stats.converged && one.converged;
+    }
+  } else {
+    stats = iterate(ctx, ctx.dynamicSets);
+  }
+
+  const double dt = ctx.dt;
   for (std::size_t a : ctx.dynamicSets) {
     ParticleSet& set = ctx.particles[a];
     auto& v = set.v();

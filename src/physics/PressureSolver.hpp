@@ -1,7 +1,10 @@
 #pragma once
 /// Porous IISPH pressure solve (METHOD.md §6.6, §6.7; Eq. 5-8): predicted densities, then relaxed Jacobi
 /// sweeps on pi = rho^max p / rho^2, clamped at 0, warm-started, every set updated together.
-/// Keys: system/solverDict pressure.{maxDensityError, minIterations, maxIterations, relaxation, warmStart}.
+/// Keys: system/solverDict pressure.{maxDensityError, minIterations, maxIterations, relaxation, warmStart};
+/// compatibility.pressureSweep setSequential solves the sets one after another (fluid first, then the porous
+/// materials in file order), each against the others' latest a^p; pressureWarmStartCap reference caps the
+/// warm start (METHOD.md §10).
 
 #include "physics/SolverSettings.hpp"
 #include "physics/StepContext.hpp"
@@ -22,14 +25,19 @@ class PressureSolver {
 public:
   explicit PressureSolver(const PressureSettings& settings) : settings_(settings) {}
 
-  /// Registers pi (restart), pressure (output) and the solver's scratch fields.
-  static void registerFields(ParticleSet& set);
+  /// Registers pi (restart), pressure (output) and the solver's scratch fields. With setSequential a^p is
+  /// restart state too: the first sets of a step see the previous step's a^p of the sets not yet solved.
+  static void registerFields(ParticleSet& set, const CompatibilitySettings& compatibility);
 
   /// rho~* = rho~ + dt [sum f V (v*_a - v*_b).gradW_ab + sum V_k (v*_a - v_k).gradW_ak] (Eq. 6).
   void predictDensities(const StepContext& ctx) const;
 
   /// Solves for pi, then v <- v* + dt a^p for every dynamic set. Needs predictDensities first.
+  /// With setSequential, `iterations` is the most any one set needed.
   PressureStats solve(const StepContext& ctx) const;
+
+  /// pi <- the warm start from the previous step's pi where rho~* > 1, else 0 (METHOD.md §6.7, §10).
+  void warmStart(const StepContext& ctx) const;
 
   /// The particle left most compressed by the last solve (set, index), for messages when it did not converge.
   static std::pair<std::size_t, std::size_t> mostCompressed(const ParticleSystem& particles,
@@ -37,9 +45,13 @@ public:
 
   /// (A pi)_a of the current pi for every particle, by dynamic set (tests probe the operator with it).
   std::vector<std::vector<double>> applyOperator(const StepContext& ctx) const;
+  /// (A pi)_a from the a^p each set holds now, without recomputing them (tests of the sequential sweep).
+  std::vector<std::vector<double>> operatorOfStoredAccelerations(const StepContext& ctx) const;
 
 private:
-  void computeAccelerations(const StepContext& ctx) const;
+  void computeAccelerations(const StepContext& ctx, const std::vector<std::size_t>& sets) const;
+  /// Relaxed Jacobi sweeps updating pi of `sets` until their errors converge; leaves their final a^p.
+  PressureStats iterate(const StepContext& ctx, const std::vector<std::size_t>& sets) const;
   PressureSettings settings_;
 };
 

@@ -66,7 +66,7 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
       set.restDensity = fluid_.density;
       set.mass = fluid_.density * volume;
       registerDensityFields(set);
-      PressureSolver::registerFields(set);
+      PressureSolver::registerFields(set, settings_.compatibility);
       ImplicitSolver::registerFields(set);
       dynamicSets_.push_back(s);
       ++fluidSets;
@@ -150,7 +150,7 @@ void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
   set.restDensity = material.maxDensity();
   set.mass = material.bulkDensity * set.particleVolume;
   registerDensityFields(set);
-  PressureSolver::registerFields(set);
+  PressureSolver::registerFields(set, settings_.compatibility);
   ImplicitSolver::registerFields(set);
   set.addInt(field::materialId, Restart);
   auto& fixed = set.addInt(field::fixed, Restart);
@@ -166,8 +166,9 @@ void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
 }
 
 StepContext Solver::context(double deltaT) {
-  return StepContext{particles_, search_,      gradients_,    kernel_,      fluid_,
-                     deltaT,     dynamicSets_, boundarySets_, setMaterials_, settings_.compatibility};
+  return StepContext{particles_,    search_,      gradients_,    kernel_,
+                     fluid_,        deltaT,       dynamicSets_,  boundarySets_,
+                     setMaterials_, settings_.compatibility, state_.lastDeltaT};
 }
 
 void Solver::searchNeighbours() {
@@ -225,7 +226,7 @@ void Solver::step(double deltaT) {
     }
     state_.time += deltaT;
     ++state_.step;
-    report_.deltaT = deltaT;
+    report_.deltaT = state_.lastDeltaT = deltaT;
     report_.maxSpeed = maxSpeed();
     state_.nextDeltaT =
         cflStepSize(control_, report_.maxSpeed, particles_.spacing(), deltaT, report_.pressure.iterations);

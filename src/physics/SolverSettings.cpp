@@ -31,13 +31,8 @@ CompatibilitySettings readCompatibility(const Dictionary& c) {
   s.deltaTScaledInitialGuess =
       readSwitch(c, "implicitInitialGuess", "deltaV", "deltaTDeltaV", s.deltaTScaledInitialGuess);
   s.restCouplingSolidDensity = readSwitch(c, "couplingSolidDensity", "current", "rest", s.restCouplingSolidDensity);
-  // The pressure solve has only the paper's sweep and warm start; say so rather than run something else.
-  for (const auto& [key, paper] : {std::pair<const char*, const char*>{"pressureSweep", "jacobi"},
-                                   std::pair<const char*, const char*>{"pressureWarmStartCap", "none"}})
-    if (c.has(key) &&
-        c.getWord(key, {paper, key == std::string("pressureSweep") ? "setSequential" : "reference"}) != paper)
-      c.fail(key, std::string("only '") + paper +
-                      "' is implemented in this version of poroSph (METHOD.md §10); remove the key");
+  s.setSequentialPressure = readSwitch(c, "pressureSweep", "jacobi", "setSequential", s.setSequentialPressure);
+  s.cappedPressureWarmStart = readSwitch(c, "pressureWarmStartCap", "none", "reference", s.cappedPressureWarmStart);
   c.checkUnknownKeys();
   return s;
 }
@@ -47,7 +42,7 @@ CompatibilitySettings readCompatibility(const Dictionary& c) {
 CompatibilitySettings CompatibilitySettings::reference() {
   CompatibilitySettings s;
   s.unitLambdaVolumetricStress = s.lambdaScaledBloating = s.deltaTScaledInitialGuess = true;
-  s.restCouplingSolidDensity = true;
+  s.restCouplingSolidDensity = s.setSequentialPressure = true;
   return s;
 }
 

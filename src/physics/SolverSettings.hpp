@@ -43,14 +43,15 @@ struct HealthSettings {
 };
 
 /// The switches of METHOD.md §10: the defaults follow the paper; the alternatives reproduce the behaviour behind
-/// the authors' published setups (block `compatibility` of system/solverDict; `preset: reference` sets them all).
-/// Of the pressure solve's switches only the paper's behaviour exists (pressureSweep: jacobi,
-/// pressureWarmStartCap: none); their alternatives are refused with a message.
+/// the authors' published setups (block `compatibility` of system/solverDict; `preset: reference` sets the five
+/// switches of the table; the warm-start cap, meant for number-level comparisons, only by its own key).
 struct CompatibilitySettings {
   bool unitLambdaVolumetricStress = false; ///< volumetricStress: lambda (false) | unitLambda: k_l tr(eps) I
   bool lambdaScaledBloating = false;       ///< bloatingStress: absolute (false) | lambdaScaled: -lambda eta S I
   bool deltaTScaledInitialGuess = false;   ///< implicitInitialGuess: deltaV (false) | deltaTDeltaV: v^n + dt dv
   bool restCouplingSolidDensity = false;   ///< couplingSolidDensity: current rho_t (false) | rest: rho_b in Eq. 11, 16
+  bool setSequentialPressure = false;      ///< pressureSweep: jacobi (false) | setSequential: one set after another
+  bool cappedPressureWarmStart = false;    ///< pressureWarmStartCap: none (false) | reference: 2.5e-4 m^2 / dt^2
 
   /// The alternatives of all switches at once (`preset: reference`).
   static CompatibilitySettings reference();

@@ -39,6 +39,7 @@ struct StepContext {
   std::vector<std::size_t> boundarySets;        ///< walls: known positions and velocities
   std::vector<const PorousMaterial*> materials; ///< by set index: the material of a porous set, else null
   CompatibilitySettings compatibility;          ///< METHOD.md §10 (defaults: the paper's behaviour)
+  double previousDt = 0.0;                      ///< the step size of the step before [s], 0 before the first
 };
 
 } // namespace poro

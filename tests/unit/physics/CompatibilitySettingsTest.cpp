@@ -31,25 +31,30 @@ TEST(CompatibilitySettings, DefaultsFollowThePaper) {
   EXPECT_FALSE(c.lambdaScaledBloating);
   EXPECT_FALSE(c.deltaTScaledInitialGuess);
   EXPECT_FALSE(c.restCouplingSolidDensity);
+  EXPECT_FALSE(c.setSequentialPressure);
+  EXPECT_FALSE(c.cappedPressureWarmStart);
 }
 
 TEST(CompatibilitySettings, ReferencePresetSetsEverySwitchAndSingleKeysOverrideIt) {
   const CompatibilitySettings all = read("compatibility:\n  preset: reference\n");
   EXPECT_TRUE(all.unitLambdaVolumetricStress && all.lambdaScaledBloating && all.deltaTScaledInitialGuess &&
-              all.restCouplingSolidDensity);
+              all.restCouplingSolidDensity && all.setSequentialPressure);
+  EXPECT_FALSE(all.cappedPressureWarmStart); // for number-level comparisons only, by its own key
   const CompatibilitySettings mixed = read("compatibility:\n  preset: reference\n  volumetricStress: lambda\n");
   EXPECT_FALSE(mixed.unitLambdaVolumetricStress);
   EXPECT_TRUE(mixed.restCouplingSolidDensity);
   EXPECT_TRUE(read("compatibility: {couplingSolidDensity: rest}\n").restCouplingSolidDensity);
+  EXPECT_TRUE(read("compatibility: {pressureSweep: setSequential}\n").setSequentialPressure);
+  EXPECT_TRUE(read("compatibility: {pressureWarmStartCap: reference}\n").cappedPressureWarmStart);
 }
 
-TEST(CompatibilitySettings, BadOrUnimplementedValuesAreInputErrorsWithLine) {
+TEST(CompatibilitySettings, BadValuesAreInputErrorsWithLine) {
   EXPECT_NE(errorOf("compatibility:\n  volumetricStress: unit\n").find("system/solverDict:2"), std::string::npos);
   EXPECT_NE(errorOf("compatibility:\n  bloatingStres: absolute\n").find("did you mean 'bloatingStress'?"),
             std::string::npos);
-  const std::string sweep = errorOf("compatibility:\n  pressureSweep: setSequential\n");
+  const std::string sweep = errorOf("compatibility:\n  pressureSweep: sequential\n");
   EXPECT_NE(sweep.find("system/solverDict:2"), std::string::npos) << sweep;
-  EXPECT_NE(sweep.find("only 'jacobi' is implemented"), std::string::npos) << sweep;
+  EXPECT_NE(sweep.find("setSequential"), std::string::npos) << sweep;
   EXPECT_NO_THROW(read("compatibility:\n  pressureSweep: jacobi\n  pressureWarmStartCap: none\n"));
 }
 

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <random>
 
 namespace poro {
@@ -13,34 +14,11 @@ namespace {
 
 using namespace test;
 
-/// Fluid on a jittered lattice inside an incompressible block and a two-object compressible block with a
-/// Fixed bottom layer, all in a wall box: every kind of pair the operator has.
 class MixedSystem : public ::testing::Test {
 protected:
   void SetUp() override {
-    std::mt19937 rng(11);
-    std::uniform_real_distribution<double> jitter(-0.3 * kR, 0.3 * kR);
-    ParticleSystem ps(kR);
-    std::vector<Vec3> fluid = sampleBox(Vec3::Zero(), Vec3(0.16, 0.12, 0.12), kR);
-    for (Vec3& p : fluid) p += Vec3(jitter(rng), jitter(rng), jitter(rng));
-    addSet(ps, "fluid", SetKind::Fluid, fluid);
-    std::vector<Vec3> sand = sampleBox(Vec3::Zero(), Vec3(0.08, 0.08, 0.12), kR);
-    for (Vec3& p : sand) p += Vec3(jitter(rng), jitter(rng), jitter(rng));
-    addSet(ps, "sand", SetKind::Porous, sand);
-    std::vector<Vec3> foamA = sampleBox(Vec3(0.08, 0.0, 0.0), Vec3(0.16, 0.04, 0.12), kR);
-    std::vector<Vec3> foamB = sampleBox(Vec3(0.08, 0.04, 0.0), Vec3(0.16, 0.08, 0.12), kR);
-    for (Vec3& p : foamB) p += Vec3(jitter(rng), jitter(rng), jitter(rng));
-    ParticleSet& foam = addSet(ps, "foam", SetKind::Porous, foamA, 2);
-    appendObject(foam, foamB, 3);
-    addSet(ps, "boundary", SetKind::Boundary,
-           sampleContainer(Vec3::Constant(-0.001), Vec3::Constant(0.161), kR, 2,
-                           {false, false, false, true, false, false}),
-           9);
-    PorousMaterial foamMaterial = material("foam", 0.7, 800.0, true);
-    foamMaterial.fixedBox = std::make_pair(Vec3(0.0, -1.0, -1.0), Vec3(1.0, 0.02, 1.0));
-    solver_ = std::make_unique<Solver>(std::move(ps), weightless(),
-                                       std::vector<PorousMaterial>{material("sand", 0.4, 2650.0, false), foamMaterial},
-                                       SolverSettings{}, fixedStep(dt_), RunState{});
+    solver_ = std::make_unique<Solver>(mixedSystem(), weightless(), mixedMaterials(), SolverSettings{}, fixedStep(dt_),
+                                       RunState{});
     ctx_ = std::make_unique<StepContext>(solver_->beginStep(dt_));
   }
   void setPi(const std::function<double(std::size_t set, std::size_t i)>& value) {

@@ -5,6 +5,7 @@
 #include "physics/FieldNames.hpp"
 #include "physics/Solver.hpp"
 
+#include <random>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,36 @@ inline std::vector<Vec3> latticeOfSpacing(const Vec3& min, const Vec3& max, doub
     for (double y = min.y() + 0.5 * d; y < max.y(); y += d)
       for (double z = min.z() + 0.5 * d; z < max.z(); z += d) points.emplace_back(x, y, z);
   return points;
+}
+
+/// Fluid on a jittered lattice inside an incompressible block ("sand") and a two-object compressible block
+/// ("foam") with a Fixed bottom layer, all in a wall box: every kind of pair the pressure operator has.
+inline ParticleSystem mixedSystem() {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> jitter(-0.3 * kR, 0.3 * kR);
+  ParticleSystem ps(kR);
+  std::vector<Vec3> fluid = sampleBox(Vec3::Zero(), Vec3(0.16, 0.12, 0.12), kR);
+  for (Vec3& p : fluid) p += Vec3(jitter(rng), jitter(rng), jitter(rng));
+  addSet(ps, "fluid", SetKind::Fluid, fluid);
+  std::vector<Vec3> sand = sampleBox(Vec3::Zero(), Vec3(0.08, 0.08, 0.12), kR);
+  for (Vec3& p : sand) p += Vec3(jitter(rng), jitter(rng), jitter(rng));
+  addSet(ps, "sand", SetKind::Porous, sand);
+  std::vector<Vec3> foamA = sampleBox(Vec3(0.08, 0.0, 0.0), Vec3(0.16, 0.04, 0.12), kR);
+  std::vector<Vec3> foamB = sampleBox(Vec3(0.08, 0.04, 0.0), Vec3(0.16, 0.08, 0.12), kR);
+  for (Vec3& p : foamB) p += Vec3(jitter(rng), jitter(rng), jitter(rng));
+  ParticleSet& foam = addSet(ps, "foam", SetKind::Porous, foamA, 2);
+  appendObject(foam, foamB, 3);
+  addSet(ps, "boundary", SetKind::Boundary,
+         sampleContainer(Vec3::Constant(-0.001), Vec3::Constant(0.161), kR, 2, {false, false, false, true, false, false}),
+         9);
+  return ps;
+}
+
+/// The materials of mixedSystem(), in this order: incompressible sand, compressible foam with a fixedBox.
+inline std::vector<PorousMaterial> mixedMaterials() {
+  PorousMaterial foam = material("foam", 0.7, 800.0, true);
+  foam.fixedBox = std::make_pair(Vec3(0.0, -1.0, -1.0), Vec3(1.0, 0.02, 1.0));
+  return {material("sand", 0.4, 2650.0, false), foam};
 }
 
 } // namespace poro::test
