@@ -281,6 +281,9 @@ PressureStats PressureSolver::solve(const StepContext& ctx) const {
       stats.maxError = std::max(stats.maxError, one.maxError);
       stats.converged = stats.converged && one.converged;
     }
+    // The finish of METHOD.md §6.7: a^p from the final pi of every set (solid-solid forces across materials
+    // stay reciprocal), used for the velocities and kept as the next step's lagged a^p.
+    computeAccelerations(ctx, ctx.dynamicSets);
   } else {
     stats = iterate(ctx, ctx.dynamicSets);
   }

@@ -50,7 +50,7 @@ public:
 
 private:
   void computeAccelerations(const StepContext& ctx, const std::vector<std::size_t>& sets) const;
-  /// Relaxed Jacobi sweeps updating pi of `sets` until their errors converge; leaves their final a^p.
+  /// Relaxed Jacobi sweeps updating pi of `sets` until their errors converge; leaves their a^p from that pi.
   PressureStats iterate(const StepContext& ctx, const std::vector<std::size_t>& sets) const;
   PressureSettings settings_;
 };

@@ -53,7 +53,7 @@ struct CompatibilitySettings {
   bool setSequentialPressure = false;      ///< pressureSweep: jacobi (false) | setSequential: one set after another
   bool cappedPressureWarmStart = false;    ///< pressureWarmStartCap: none (false) | reference: 2.5e-4 m^2 / dt^2
 
-  /// The alternatives of all switches at once (`preset: reference`).
+  /// The alternatives of the five switches of METHOD.md §10 at once (`preset: reference`); not the cap.
   static CompatibilitySettings reference();
 };
 

@@ -169,6 +169,7 @@ void makeSmallSeep(CaseRunner& runner, const std::string& endTime) {
   runner.setKey("system/controlDict", "writeInterval", "0.1");
   // Every switch at its alternative: a^p of the step before and its step size join the state.
   runner.replace("system/solverDict", "  preset: paper", "  preset: reference\n  pressureWarmStartCap: reference");
+  runner.write("system/solverDict", runner.read("system/solverDict") + "neighbourSearch:\n  sortInterval: 7\n");
 }
 
 TEST(Restart, ElasticBodyInReferenceModeRestartsBitForBit) {
@@ -191,11 +192,20 @@ TEST(Restart, ElasticBodyInReferenceModeRestartsBitForBit) {
   const ParticleSystem b = split.particles("0.3", 0.025);
   expectIdentical(*a.find("fluid"), *b.find("fluid"));
   expectIdentical(*a.find("soil"), *b.find("soil"));
-  // What the restart has to carry is in play at the restart: the block is compressed and has deformed.
+  // What the restart has to carry is in play at the restart: the step size changes there, the block is
+  // compressed, its a^p is saved, and it has deformed.
+  const RunState state = readRunState(split.dir() / "0.2");
+  EXPECT_GT(state.lastDeltaT, 0.0);
+  EXPECT_NE(state.lastDeltaT, state.nextDeltaT);
   const ParticleSystem atRestart = split.particles("0.2", 0.025);
   const ParticleSet& block = *atRestart.find("soil");
   const auto& pi = block.real(field::pi);
   EXPECT_GT(*std::max_element(pi.begin(), pi.end()), 0.0);
+  ASSERT_TRUE(block.has(field::accelP));
+  const auto& accel = block.vec3(field::accelP);
+  EXPECT_GT(std::max_element(accel.begin(), accel.end(), [](const Vec3& a, const Vec3& b) { return a.norm() < b.norm(); })
+                ->norm(),
+            0.0);
   const auto& x = block.x();
   const auto& rest = block.vec3(field::restPosition);
   double spread = 0.0;
