@@ -21,13 +21,15 @@ namespace {
 constexpr double kGravity = 9.81;
 constexpr double kRho0 = 1000.0;
 
-/// Hydrostatic tank, 10 x 25 x 10 particles (r = 1 cm, depth 0.5 m), settled for 1.5 s.
+/// Hydrostatic tank as in the tutorial (20 x 25 x 20 particles, r = 1 cm, depth 0.5 m), but settled: the
+/// inviscid tutorial keeps the kinetic energy of its start-up lattice rearrangement (0.16 m/s rms, README),
+/// so the column is never at rest. mu = 5 Pa s brings it to 6 mm/s rms by t = 1 s; at rest viscosity does
+/// not change the pressure. 1.5 s, the checks use the last 0.5 s.
 class HydrostaticTank : public ::testing::Test {
 protected:
   static void SetUpTestSuite() {
     runner_ = new CaseRunner("fluid/hydrostaticTank", "HydrostaticTank");
-    runner_->replace("system/particleDict", "max: [0.4, 0.5, 0.4]", "max: [0.2, 0.5, 0.2]");
-    runner_->replace("system/particleDict", "max: [0.401, 0.7, 0.401]", "max: [0.201, 0.7, 0.201]");
+    runner_->setKey("constant/fluidProperties", "viscosity", "5");
     runner_->setKey("system/controlDict", "endTime", "1.5");
     runner_->setKey("system/controlDict", "writeInterval", "0.02"); // 25 snapshots over the last 0.5 s
     ASSERT_EQ(runner_->sample(), 0) << runner_->read("log.sampleParticles");
@@ -108,37 +110,59 @@ TEST_F(HydrostaticTank, DensityStaysWithinTolerance) {
   }
 }
 
-// DISABLED: measured layer means are 3-11 % above rho0 g d (worst near the surface) while the floor force
-// matches the weight within 2 %; VALIDATION.md asks for 5 %. Open in issue 2, see the closing note; run it
-// with --gtest_also_run_disabled_tests.
-TEST_F(HydrostaticTank, DISABLED_PressureIsHydrostatic) {
-  // Layer means of particles three or more layers away from the walls and below the top two layers,
-  // averaged over the last 0.5 s, against rho0 g depth below the free surface.
-  std::map<long, std::pair<double, double>> layers; // layer -> (sum p, sum rho0 g d)
-  std::map<long, int> counts;
-  const double spacing = 2 * radius_;
-  for (const auto& time : lastTimes(25)) {
+TEST_F(HydrostaticTank, PressureIsHydrostatic) {
+  // Interior particles (three or more spacings from the walls, below the top two layers) of the last 0.5 s.
+  // The free surface is where the least-squares line p(y) vanishes: it must lie within r of the particles'
+  // own surface (top particle + r); the line's slope must be rho0 g within 5 %, and every layer's mean
+  // pressure within 5 % of rho0 g d, d the depth below that surface (VALIDATION.md).
+  const double spacing = 2 * radius_, side = 0.4;
+  std::vector<double> heights, pressures;
+  double particleSurface = 0.0;
+  const auto times = lastTimes(25);
+  for (const auto& time : times) {
     const ParticleSystem ps = runner_->particles(time.name, radius_);
     const ParticleSet& fluid = *ps.find("fluid");
     const double surface = surfaceHeight(fluid, radius_);
+    particleSurface += surface / static_cast<double>(times.size());
     const auto& p = fluid.real(field::pressure);
     for (std::size_t i = 0; i < fluid.size(); ++i) {
       const Vec3& x = fluid.x()[i];
-      const double wall = std::min({x.x(), 0.2 - x.x(), x.z(), 0.2 - x.z(), x.y()});
-      const double depth = surface - x.y();
-      if (wall < 3 * spacing || depth < 2 * spacing) continue;
-      const long layer = std::lround(x.y() / spacing);
-      layers[layer].first += p[i];
-      layers[layer].second += kRho0 * kGravity * depth;
-      ++counts[layer];
+      const double wall = std::min({x.x(), side - x.x(), x.z(), side - x.z(), x.y()});
+      if (wall < 3 * spacing || surface - x.y() < 2 * spacing) continue;
+      heights.push_back(x.y());
+      pressures.push_back(p[i]);
     }
   }
-  ASSERT_GE(layers.size(), 15u);
-  for (const auto& [layer, sums] : layers) {
-    if (counts[layer] < 100) continue; // partly filled top layers
-    EXPECT_NEAR(sums.first / sums.second, 1.0, 0.05)
-        << "layer " << layer << " mean pressure " << sums.first / counts[layer] << " Pa";
+  ASSERT_GE(heights.size(), 50000u);
+  // p = c0 + c1 y by least squares.
+  const double n = static_cast<double>(heights.size());
+  double sy = 0, sp = 0, syy = 0, syp = 0;
+  for (std::size_t i = 0; i < heights.size(); ++i) {
+    sy += heights[i];
+    sp += pressures[i];
+    syy += heights[i] * heights[i];
+    syp += heights[i] * pressures[i];
   }
+  const double c1 = (n * syp - sy * sp) / (n * syy - sy * sy), c0 = (sp - c1 * sy) / n;
+  const double freeSurface = -c0 / c1;
+  EXPECT_NEAR(-c1 / (kRho0 * kGravity), 1.0, 0.05) << "pressure gradient / (rho0 g)";
+  EXPECT_NEAR(freeSurface, particleSurface, radius_) << "level where p vanishes against top particle + r";
+  RecordProperty("surfaceAboveTopParticlesOverR", std::to_string((freeSurface - particleSurface) / radius_));
+
+  std::map<long, std::pair<double, double>> layers; // layer -> (sum p, sum rho0 g d)
+  for (std::size_t i = 0; i < heights.size(); ++i) {
+    auto& layer = layers[std::lround(heights[i] / spacing)];
+    layer.first += pressures[i];
+    layer.second += kRho0 * kGravity * (freeSurface - heights[i]);
+  }
+  ASSERT_GE(layers.size(), 18u);
+  double worst = 0.0;
+  for (const auto& [layer, sums] : layers) {
+    EXPECT_NEAR(sums.first / sums.second, 1.0, 0.05) << "layer " << layer << " (y = " << layer * spacing << " m)";
+    worst = std::max(worst, std::abs(sums.first / sums.second - 1.0));
+  }
+  RecordProperty("pressureGradientOverRho0g", std::to_string(-c1 / (kRho0 * kGravity)));
+  RecordProperty("worstLayerDeviation", std::to_string(worst));
 }
 
 TEST_F(HydrostaticTank, BottomForceEqualsWeight) {
@@ -161,7 +185,7 @@ TEST_F(HydrostaticTank, BottomForceEqualsWeight) {
         const std::size_t kk = static_cast<std::size_t>(k);
         const Vec3& xk = boundary.x()[kk];
         // The floor under the fluid; the walls' corner columns carry the side walls' share.
-        if (xk.y() > 0.0 || xk.x() < 0.0 || xk.x() > 0.2 || xk.z() < 0.0 || xk.z() > 0.2) continue;
+        if (xk.y() > 0.0 || xk.x() < 0.0 || xk.x() > 0.4 || xk.z() < 0.0 || xk.z() > 0.4) continue;
         forceSum += mass * pi[i] * volume[kk] * kernel.grad(fluid.x()[i] - boundary.x()[kk]).y();
       }
     weightSum += static_cast<double>(fluid.size()) * mass * kGravity;
