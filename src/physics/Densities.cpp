@@ -2,6 +2,7 @@
 
 #include "core/Parallel.hpp"
 #include "physics/FieldNames.hpp"
+#include "physics/PoreFluidDensityBias.hpp"
 #include "physics/VolumeFactors.hpp"
 #include "sph/BoundaryVolume.hpp"
 
@@ -52,6 +53,7 @@ void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& g
   double* fluidVolume = porous ? set.real(kFluidVolume).data() : nullptr;
   double* localPorosity = porous ? nullptr : set.real(field::localPorosity).data();
   const std::int64_t* objectA = set.integer(field::objectId).data();
+  const PoreFluidDensityBias* poreBias = porous ? nullptr : ctx.poreFluidBias;
 
   std::vector<Partner> partners;
   const auto couplings = couplingsOf(ctx, a);
@@ -125,6 +127,7 @@ void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& g
       }
     }
     rt += wallW;
+    if (poreBias && solidW > 0.0) rt -= (*poreBias)(1.0 - volume * solidW);
     rhoTilde[i] = rt;
     density[i] = rhoMax * rt;
     gradSum[i] = g;

@@ -56,6 +56,7 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
       wallMotions_(std::move(wallMotions)) {
   if (settings_.threads > 0) parallel::setThreads(settings_.threads);
   const double volume = particles_.particleVolume();
+  if (settings_.pressure.latticeCorrectedPoreFluid) poreFluidBias_.emplace(kernel_, volume);
   setMaterials_.assign(particles_.size(), nullptr);
   std::size_t fluidSets = 0;
   for (std::size_t s = 0; s < particles_.size(); ++s) {
@@ -168,7 +169,8 @@ void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
 StepContext Solver::context(double deltaT) {
   return StepContext{particles_,    search_,      gradients_,    kernel_,
                      fluid_,        deltaT,       dynamicSets_,  boundarySets_,
-                     setMaterials_, settings_.compatibility, state_.lastDeltaT};
+                     setMaterials_, settings_.compatibility, state_.lastDeltaT,
+                     poreFluidBias_ ? &*poreFluidBias_ : nullptr};
 }
 
 void Solver::searchNeighbours() {

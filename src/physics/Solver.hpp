@@ -106,6 +106,7 @@ private:
   TimeControl control_;
   RunState state_;
   CubicKernel kernel_;
+  std::optional<PoreFluidDensityBias> poreFluidBias_; ///< set when pressure.poreFluidDensity is latticeCorrected
   NeighbourSearch search_;
   PairGradients gradients_;
   std::vector<std::size_t> dynamicSets_, boundarySets_;

@@ -58,6 +58,8 @@ SolverSettings SolverSettings::read(const Dictionary& dict) {
                                    "), got " + std::to_string(ps.minIterations));
     ps.relaxation = p->getReal("relaxation", ps.relaxation, Range{0.0, 1.0, true, false});
     ps.warmStart = p->getReal("warmStart", ps.warmStart, Range::closed(0.0, 1.0));
+    ps.latticeCorrectedPoreFluid =
+        p->getWord("poreFluidDensity", {"paper", "latticeCorrected"}, "paper") == "latticeCorrected";
     p->checkUnknownKeys();
   }
   if (auto i = dict.optionalSubDict("implicit")) {

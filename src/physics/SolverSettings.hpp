@@ -15,6 +15,8 @@ struct PressureSettings {
   int maxIterations = 100;
   double relaxation = 0.5; ///< Jacobi relaxation omega, (0, 1]
   double warmStart = 0.5;  ///< warm-start factor, [0, 1]
+  /// poreFluidDensity: paper (false, Eq. 4 as it stands) | latticeCorrected (PoreFluidDensityBias.hpp)
+  bool latticeCorrectedPoreFluid = false;
 };
 
 struct ImplicitSettings {

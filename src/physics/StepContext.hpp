@@ -3,6 +3,7 @@
 
 #include "physics/FluidProperties.hpp"
 #include "physics/PorousMaterial.hpp"
+#include "physics/PoreFluidDensityBias.hpp"
 #include "physics/SolverSettings.hpp"
 #include "sph/Kernel.hpp"
 #include "sph/NeighbourSearch.hpp"
@@ -40,6 +41,7 @@ struct StepContext {
   std::vector<const PorousMaterial*> materials; ///< by set index: the material of a porous set, else null
   CompatibilitySettings compatibility;          ///< METHOD.md §10 (defaults: the paper's behaviour)
   double previousDt = 0.0;                      ///< the step size of the step before [s], 0 before the first
+  const PoreFluidDensityBias* poreFluidBias = nullptr; ///< pressure.poreFluidDensity latticeCorrected, else null
 };
 
 } // namespace poro

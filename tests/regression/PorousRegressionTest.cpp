@@ -68,12 +68,7 @@ TEST_P(Seepage, AbsorbedVolumeIsSetByPorosity) {
 }
 
 const auto kPorosityName = [](const auto& info) { return "phi" + std::to_string(static_cast<int>(info.param * 10)); };
-INSTANTIATE_TEST_SUITE_P(Porosities, Seepage, ::testing::Values(0.6, 0.8), kPorosityName);
-// phi = 0.4 settles at 0.87 phi V_block with mean interior saturation 0.93 (r = 2 cm, the same ratio at
-// r = 1 cm): fluid in the pores sits at spacing ~2r phi^(-1/3) = 2.7r, where the cubic spline's lattice sum
-// overestimates the number density by 11 % (0.4456 instead of 0.4), so the density constraint packs the
-// pore fluid ~10 % too sparsely. Disabled until the pore-fluid density estimate is corrected.
-INSTANTIATE_TEST_SUITE_P(DISABLED_LowPorosity, Seepage, ::testing::Values(0.4), kPorosityName);
+INSTANTIATE_TEST_SUITE_P(Porosities, Seepage, ::testing::Values(0.4, 0.6, 0.8), kPorosityName);
 
 } // namespace
 } // namespace poro::test

@@ -58,5 +58,25 @@ TEST(CompatibilitySettings, BadValuesAreInputErrorsWithLine) {
   EXPECT_NO_THROW(read("compatibility:\n  pressureSweep: jacobi\n  pressureWarmStartCap: none\n"));
 }
 
+TEST(PoreFluidDensity, PaperByDefaultLatticeCorrectedOnRequestAndAnythingElseIsAnError) {
+  // Not a compatibility switch: a correction the paper does not make (PoreFluidDensityBias.hpp), so the
+  // reference preset leaves it alone.
+  const auto pressure = [](const std::string& text) {
+    return SolverSettings::read(Dictionary::parse(text, "system/solverDict")).pressure;
+  };
+  EXPECT_FALSE(pressure("threads: 0\n").latticeCorrectedPoreFluid);
+  EXPECT_TRUE(pressure("pressure:\n  poreFluidDensity: latticeCorrected\n").latticeCorrectedPoreFluid);
+  EXPECT_FALSE(pressure("pressure: {poreFluidDensity: paper}\ncompatibility: {preset: reference}\n")
+                   .latticeCorrectedPoreFluid);
+  try {
+    pressure("pressure:\n  maxIterations: 50\n  poreFluidDensity: corrected\n");
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("system/solverDict:3"), std::string::npos) << message;
+    EXPECT_NE(message.find("latticeCorrected"), std::string::npos) << message;
+  }
+}
+
 } // namespace
 } // namespace poro
