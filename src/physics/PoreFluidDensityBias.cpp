@@ -37,4 +37,14 @@ double PoreFluidDensityBias::operator()(double poreShare) const {
   return (1.0 - t) * table_[k] + t * table_[k + 1];
 }
 
+double PoreFluidDensityBias::uncorrectedFill(double porosity) const {
+  if (porosity >= 1.0) return 1.0;
+  // s + b(s) rises with s (the lattice sum rises with the density), so bisect; b may be negative (phi > 0.7).
+  const auto excess = [&](double share) { return share + (*this)(share) - porosity; };
+  if (porosity <= kMinShare || excess(kMinShare) >= 0.0) return 0.0;
+  double lo = kMinShare, hi = 1.0;
+  for (int it = 0; it < 50; ++it) (excess(0.5 * (lo + hi)) < 0.0 ? lo : hi) = 0.5 * (lo + hi);
+  return lo / porosity;
+}
+
 } // namespace poro

@@ -21,6 +21,10 @@ public:
   PoreFluidDensityBias(const CubicKernel& kernel, double volume);
   /// b(poreShare); shares outside [kMinShare, 1] are clamped into it.
   double operator()(double poreShare) const;
+  /// The share of its pores that fluid fills at rest without the correction (Eq. 4 as it stands), on the lattice:
+  /// s / phi with s + b(s) = phi, where the fluid's own kernel sum equals the pore share. 0 when even a lone
+  /// particle's self term exceeds it (phi below about 1/pi).
+  double uncorrectedFill(double porosity) const;
   /// sum_n V W(spacing n) over the simple cubic lattice points n (self included).
   static double latticeSum(const CubicKernel& kernel, double volume, double spacing);
 

@@ -11,6 +11,7 @@
 #include "physics/FieldNames.hpp"
 #include "physics/Viscosity.hpp"
 #include "physics/NumericalHealth.hpp"
+#include "physics/PoreFluidDensityBias.hpp"
 #include "physics/PorousDrag.hpp"
 #include "physics/TimeStepSize.hpp"
 #include "physics/VolumeFactors.hpp"
@@ -415,12 +416,31 @@ void Solver::checkIterations(const Writer& write) {
   }
 }
 
+void Solver::notePoreFluidFill() const {
+  if (settings_.pressure.latticeCorrectedPoreFluid) return;
+  const bool fluid = std::any_of(dynamicSets_.begin(), dynamicSets_.end(),
+                                 [&](std::size_t s) { return particles_[s].kind() == SetKind::Fluid; });
+  if (!fluid || materials_.empty()) return;
+  const PoreFluidDensityBias bias(kernel_, particles_.particleVolume());
+  for (const PorousMaterial& m : materials_) {
+    const double fill = bias.uncorrectedFill(m.porosity);
+    if (m.porosity <= 0.0 || fill > 0.9) continue;
+    std::ostringstream msg;
+    msg << std::setprecision(3) << "porous material '" << m.name << "' (porosity " << m.porosity
+        << "): with pressure.poreFluidDensity paper (Eq. 4 as published, the default) fluid at rest fills about "
+        << std::lround(100.0 * fill) << " % of its pores (lattice estimate); pressure.poreFluidDensity "
+        << "latticeCorrected in system/solverDict fills them";
+    log::warning(msg.str());
+  }
+}
+
 RunOutcome Solver::run(const Writer& write, const Monitor& afterStep, const Observer& stepDone) {
   using StopAt = TimeControl::StopAt;
   const Timer clock;
   const double startTime = state_.time;
   lastWrittenStep_ = state_.step; // the start time directory is on disk
   RunOutcome outcome;
+  notePoreFluidFill();
   log::info("Starting time loop\n");
   while (state_.time < control_.endTime - endSlack()) {
     const double previousTime = state_.time;

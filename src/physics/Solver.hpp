@@ -84,6 +84,9 @@ private:
   double maxSpeed() const;
   void measureFluidDensity();
   void logProgress(double elapsed, double startTime) const;
+  /// Without the pore-fluid correction, warns of porous materials whose pores fluid fills 10 % short or more
+  /// (the absorbed-volume tolerance of VALIDATION.md): porosity below about 0.45.
+  void notePoreFluidFill() const;
   void checkHealth(const Writer& write);
   void checkIterations(const Writer& write);
   void writeState(const Writer& write);
