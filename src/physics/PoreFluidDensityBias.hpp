@@ -23,7 +23,7 @@ public:
   double operator()(double poreShare) const;
   /// The share of its pores that fluid fills at rest without the correction (Eq. 4 as it stands), on the lattice:
   /// s / phi with s + b(s) = phi, where the fluid's own kernel sum equals the pore share. 0 when even a lone
-  /// particle's self term exceeds it (phi below about 1/pi).
+  /// particle's self term exceeds it (phi below about 1/pi); slightly above 1 for phi > 0.75, where b < 0.
   double uncorrectedFill(double porosity) const;
   /// sum_n V W(spacing n) over the simple cubic lattice points n (self included).
   static double latticeSum(const CubicKernel& kernel, double volume, double spacing);
