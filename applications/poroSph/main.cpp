@@ -25,6 +25,12 @@ int main(int argc, char* argv[]) try {
     return 0;
   }
   SimulationCase simulation = readCase(args.caseDir(), args.threads());
+  if (simulation.endTimeReached) {
+    log::info("Case: " + args.caseDir() + "\nThe start time directory " + simulation.startName +
+              " has reached endTime " + timeName(simulation.control.endTime) +
+              " (system/controlDict): nothing to run. To run further, raise endTime.\nEnd");
+    return 0;
+  }
   std::ostringstream banner;
   banner << "Case: " << args.caseDir() << "\nStarting from time " << simulation.startName << " with "
          << simulation.particles.particleCount() << " particles";

@@ -1,14 +1,16 @@
 #pragma once
-/// SIGINT and SIGTERM as a polite request to stop: the handler only records the signal; the time loop
-/// finishes its step, writes a time directory and exits (a killed run keeps a restartable state).
+/// SIGINT, SIGTERM and SIGHUP (a closed terminal) as a polite request to stop: the handler only records the
+/// signal; the time loop finishes its step, writes a time directory and exits (a killed run keeps a
+/// restartable state). A second signal while the first is pending ends the process at once: time
+/// directories are written under a temporary name and renamed when complete, so earlier ones stay intact.
 
 namespace poro::signals {
 
-/// Installs the handlers for SIGINT and SIGTERM.
+/// Installs the handlers for SIGINT, SIGTERM and SIGHUP.
 void installStopHandlers();
 /// The signal that asked the run to stop, or 0.
 int stopRequested();
-/// "SIGINT", "SIGTERM" or the number.
+/// "SIGINT", "SIGTERM", "SIGHUP" or "a signal".
 const char* name(int signal);
 
 } // namespace poro::signals

@@ -54,6 +54,9 @@ void syncDirectory(const fs::path& dir) {
   ::close(fd);
 }
 
+/// Where renameAtomically puts an old target aside on file systems without exchange (recoverInterruptedWrites).
+fs::path asideName(const fs::path& path) { return path.parent_path() / ("." + path.filename().string() + ".old"); }
+
 } // namespace
 
 fs::path temporarySibling(const fs::path& path) {
@@ -107,13 +110,33 @@ void renameAtomically(const fs::path& from, const fs::path& to) {
     throw OutputError(from.string() + ": cannot rename to " + to.string() + " (" +
                       (ec ? ec.message() : std::string(std::strerror(ENOENT))) + ")");
   }
-  if (fs::exists(fs::symlink_status(to, ec))) {
-    fs::remove_all(to, ec);
-    if (ec) throw OutputError(to.string() + ": cannot remove before replacing it (" + ec.message() + ")");
+  const auto cannot = [&](const std::string& what, int error) {
+    throw OutputError(from.string() + ": cannot " + what + " " + to.string() + " (" + std::strerror(error) + ")");
+  };
+  if (!fs::exists(fs::symlink_status(to, ec))) {
+    if (std::rename(from.c_str(), to.c_str()) != 0) cannot("rename to", errno);
+    syncDirectory(to.parent_path());
+    return;
   }
-  fs::rename(from, to, ec);
-  if (ec) throw OutputError(from.string() + ": cannot rename to " + to.string() + " (" + ec.message() + ")");
+  // Never a moment without a complete `to`: exchange the two in one step (Linux), then delete the old one.
+  if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_EXCHANGE) == 0) {
+    syncDirectory(to.parent_path());
+    fs::remove_all(from, ec); // now the old content; a kill before this leaves it to removeStaleTemporaries
+    return;
+  }
+  if (errno != EINVAL && errno != ENOSYS && errno != EXDEV) cannot("exchange with", errno);
+  // A file system without exchange: put the old one aside, move the new one in, delete the old one. A kill in
+  // between leaves `.<name>.old`, which removeStaleTemporaries restores when `to` is missing.
+  const fs::path aside = asideName(to);
+  fs::remove_all(aside, ec);
+  if (std::rename(to.c_str(), aside.c_str()) != 0) cannot("move aside", errno);
+  if (std::rename(from.c_str(), to.c_str()) != 0) {
+    const int error = errno;
+    std::rename(aside.c_str(), to.c_str()); // put the old one back: a failed replace keeps it
+    cannot("rename to", error);
+  }
   syncDirectory(to.parent_path());
+  fs::remove_all(aside, ec);
 }
 
 } // namespace poro

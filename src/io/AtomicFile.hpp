@@ -12,8 +12,10 @@ namespace poro {
 /// temporary file is removed on failure.
 void writeFileAtomically(const std::filesystem::path& path, const std::string& content);
 
-/// Replaces the directory (or file) `to` by `from`: removes `to` if it exists, then renames `from` to `to`.
-/// The removal and the rename are two steps, so only the rename itself is atomic. Throws OutputError.
+/// Replaces the directory (or file) `to` by `from` so that `to` is complete at every moment: an existing `to`
+/// is exchanged with `from` in one step (renameat2 RENAME_EXCHANGE) and then deleted; where the file system
+/// cannot exchange, it is renamed aside to `.<name>.old` first and put back if the rename fails. Throws
+/// OutputError; after a failure `to` is as it was.
 void renameAtomically(const std::filesystem::path& from, const std::filesystem::path& to);
 
 /// The temporary sibling writeFileAtomically uses for `path`: `<dir>/.<name>.tmp.<pid>`.

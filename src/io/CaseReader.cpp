@@ -78,6 +78,7 @@ SimulationCase readCase(const fs::path& caseDir, int threads) {
     Dictionary::read((caseDir / "system" / "controlDict").string()).fail(key, message); // for the line
   };
   std::string startName;
+  recoverInterruptedWrites(caseDir);
   const auto times = listTimeDirectories(caseDir);
   std::string names;
   for (const auto& t : times) names += (names.empty() ? "" : ", ") + t.name;
@@ -97,10 +98,10 @@ SimulationCase readCase(const fs::path& caseDir, int threads) {
   }
   RunState start = readRunState(caseDir / startName);
   ParticleSystem particles = readParticles(caseDir, startName, radius, materials);
-  if (start.time >= control.endTime)
-    controlDictError("endTime", "expected endTime > the start time " + startName + ", got " + timeName(control.endTime));
+  // As OpenFOAM: a finished case run again (startFrom latestTime) reports that it is done; the caller exits 0.
+  const bool endTimeReached = control.endTimeReached(start.time);
   return SimulationCase{control,   output, solver, fluid, std::move(materials), startName, start, std::move(particles),
-                        std::move(wallMotions)};
+                        std::move(wallMotions), endTimeReached};
 }
 
 } // namespace poro

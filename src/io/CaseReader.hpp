@@ -26,6 +26,8 @@ struct SimulationCase {
   RunState start;
   ParticleSystem particles;
   std::vector<ObjectMotion> wallMotions; ///< the `motion:` blocks of system/particleDict's boundary regions
+  /// The start time directory is at endTime or after it (a finished case run again): nothing to run.
+  bool endTimeReached = false;
 };
 
 /// `threads` > 0 overrides solverDict's threads (-threads on the command line).

@@ -8,11 +8,15 @@
 #include "io/PorousSets.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <memory>
 #include <optional>
 #include <sstream>
+
+#include <unistd.h>
 
 namespace poro {
 
@@ -180,11 +184,32 @@ void writeDirectoryAtomically(const fs::path& caseDir, const std::string& name, 
   if (ec) throw OutputError(temporary.string() + ": cannot create directory: " + ec.message());
   try {
     fill(temporary);
+    renameAtomically(temporary, target); // an existing `target` stays complete until the new one replaces it
   } catch (...) { // a full disk: give the space of the partial directory back; earlier times stay as they are
     fs::remove_all(temporary, ec);
     throw;
   }
-  renameAtomically(temporary, target);
+}
+
+/// `.<time>.tmp` (a directory being written) and `.<time>.old` (one being replaced, renameAtomically) of a time:
+/// the time's name, or "" for any other entry.
+std::string timeOfTemporary(const std::string& entry, const std::string& suffix) {
+  double value = 0.0;
+  if (entry.size() <= suffix.size() + 1 || entry.front() != '.' ||
+      entry.compare(entry.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return "";
+  const std::string name = entry.substr(1, entry.size() - suffix.size() - 1);
+  return isTimeName(name, value) ? name : "";
+}
+
+/// `.case.pvd.tmp.<pid>` of a process that no longer runs (AtomicFile's temporarySibling of case.pvd).
+bool isStalePvdTemporary(const std::string& entry) {
+  const std::string prefix = std::string(".") + kPvdName + ".tmp.";
+  if (entry.rfind(prefix, 0) != 0) return false;
+  const std::string pid = entry.substr(prefix.size());
+  if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) return false;
+  const long owner = std::strtol(pid.c_str(), nullptr, 10);
+  return owner != static_cast<long>(::getpid()) && ::kill(static_cast<pid_t>(owner), 0) != 0 && errno == ESRCH;
 }
 
 } // namespace
@@ -283,7 +308,7 @@ TimeWriter::TimeWriter(fs::path caseDir, const OutputSettings& settings, const s
     }
   }
   series_.removeTimesAfter(start);
-  removeUnfinishedDirectories();
+  recoverInterruptedWrites(caseDir_);
   for (const auto& entry : fs::directory_iterator(caseDir_ / startName))
     if (isParticleFile(entry.path()))
       series_.add(start, entry.path().stem().string(), startName + "/" + entry.path().filename().string());
@@ -303,20 +328,31 @@ void TimeWriter::write(const ParticleSystem& particles, const RunState& state) {
   series_.write(caseDir_ / kPvdName);
 }
 
-void TimeWriter::removeUnfinishedDirectories() {
-  std::vector<fs::path> unfinished; // `.<time>.tmp` of a run killed while writing
+void recoverInterruptedWrites(const fs::path& caseDir) {
+  std::vector<fs::path> unfinished, replaced, stale;
   std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(caseDir_, ec)) {
+  for (const auto& entry : fs::directory_iterator(caseDir, ec)) {
     const std::string name = entry.path().filename().string();
-    double value = 0.0;
-    if (entry.is_directory() && name.size() > 5 && name.front() == '.' && name.substr(name.size() - 4) == ".tmp" &&
-        isTimeName(name.substr(1, name.size() - 5), value))
-      unfinished.push_back(entry.path());
+    if (entry.is_directory() && !timeOfTemporary(name, ".tmp").empty()) unfinished.push_back(entry.path());
+    else if (entry.is_directory() && !timeOfTemporary(name, ".old").empty()) replaced.push_back(entry.path());
+    else if (entry.is_regular_file() && isStalePvdTemporary(name)) stale.push_back(entry.path());
   }
   for (const auto& path : unfinished) {
     fs::remove_all(path, ec);
     log::warning(path.string() + ": removed an unfinished time directory (a run was killed while writing it)");
   }
+  for (const auto& path : replaced) { // a run killed while replacing the time directory (renameAtomically)
+    const fs::path time = caseDir / timeOfTemporary(path.filename().string(), ".old");
+    if (fs::exists(time / "uniform" / "time")) {
+      fs::remove_all(path, ec);
+      continue;
+    }
+    fs::remove_all(time, ec);
+    fs::rename(path, time, ec);
+    log::warning(time.string() + ": restored from " + path.filename().string() +
+                 " (a run was killed while replacing this time directory)");
+  }
+  for (const auto& path : stale) fs::remove(path, ec); // left by a run killed while rewriting case.pvd
 }
 
 void TimeWriter::purge() {

@@ -41,6 +41,11 @@ RunState readRunState(const std::filesystem::path& timeDir);
 ParticleSystem readParticles(const std::filesystem::path& caseDir, const std::string& timeName, double particleRadius,
                              const std::vector<PorousMaterial>& materials);
 
+/// Cleans up after a run killed while writing: removes `.<t>.tmp` (unfinished time directories) and the
+/// `.case.pvd.tmp.<pid>` of processes that no longer run, and puts back `.<t>.old` (a time directory being
+/// replaced) where `<t>` is missing or incomplete. poroSph does this before it looks for its start time.
+void recoverInterruptedWrites(const std::filesystem::path& caseDir);
+
 /// Writes the solver's state as a time directory and keeps case.pvd in step.
 class TimeWriter {
 public:
@@ -61,7 +66,6 @@ public:
 
 private:
   void purge();
-  void removeUnfinishedDirectories();
   std::filesystem::path caseDir_;
   OutputSettings settings_;
   PvdSeries series_;

@@ -39,7 +39,10 @@ std::vector<std::unique_ptr<ImplicitTerm>> makeImplicitTerms() {
 }
 
 std::string formatDuration(double seconds) {
-  const long long s = static_cast<long long>(std::llround(seconds));
+  // Beyond a year of wall time the figure says only that (and a huge quotient must not overflow the rounding).
+  constexpr double kYear = 365.0 * 24 * 3600;
+  if (!(seconds < kYear)) return "more than a year";
+  const long long s = std::llround(std::max(seconds, 0.0));
   std::ostringstream out;
   out << s / 3600 << ':' << std::setw(2) << std::setfill('0') << (s / 60) % 60 << ':' << std::setw(2)
       << std::setfill('0') << s % 60;
@@ -273,11 +276,6 @@ double Solver::stepSizeFor(double deltaT) const {
   return stepTowards(state_.time, target, deltaT);
 }
 
-double Solver::endSlack() const {
-  // Fixed steps accumulate round-off in t; adjustable steps land on endTime exactly (stepTowards).
-  return control_.adjustTimeStep ? 1e-9 * std::max(1.0, control_.endTime) : 0.5 * control_.deltaT;
-}
-
 bool Solver::isWriteStep(double previousTime) const {
   if (control_.writeControl == TimeControl::WriteControl::TimeStep)
     return state_.step % static_cast<long long>(control_.writeInterval) == 0;
@@ -442,7 +440,7 @@ RunOutcome Solver::run(const Writer& write, const Monitor& afterStep, const Obse
   RunOutcome outcome;
   notePoreFluidFill();
   log::info("Starting time loop\n");
-  while (state_.time < control_.endTime - endSlack()) {
+  while (!control_.endTimeReached(state_.time)) {
     const double previousTime = state_.time;
     const double dt = stepSizeFor(state_.nextDeltaT);
     {
@@ -456,7 +454,7 @@ RunOutcome Solver::run(const Writer& write, const Monitor& afterStep, const Obse
       checkHealth(write);
     }
     if (afterStep) afterStep(*this);
-    const bool last = !(state_.time < control_.endTime - endSlack());
+    const bool last = control_.endTimeReached(state_.time);
     const int signal = signals::stopRequested();
     const bool writeTime = isWriteStep(previousTime);
     const StopAt stopAt = control_.stopAt;

@@ -94,7 +94,6 @@ private:
   std::string whatToChange() const;
   double stepSizeFor(double deltaT) const;
   bool isWriteStep(double previousTime) const;
-  double endSlack() const;
 
   void setUpPorousSet(ParticleSet& set, const PorousMaterial& material);
   void setUpBoundarySet(ParticleSet& set);

@@ -2,6 +2,7 @@
 
 #include "core/Dictionary.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 namespace poro {
@@ -42,6 +43,30 @@ TimeControl TimeControl::read(const Dictionary& dict) {
     t.writeInterval = static_cast<double>(dict.getInt("writeInterval", Range::atLeast(1)));
   else
     t.writeInterval = dict.getReal("writeInterval", Range::positive());
+  // With adjustable steps every step lands on the next write time (Solver::stepSizeFor), so a shorter interval
+  // would silently force steps below minDeltaT.
+  if (t.adjustTimeStep && t.writeControl == WriteControl::RunTime && t.writeInterval < t.minDeltaT) {
+    std::ostringstream msg;
+    msg << "expected writeInterval >= minDeltaT (" << t.minDeltaT << " s) with adjustTimeStep, got "
+        << t.writeInterval << ": steps land on write times, so they would be shorter than minDeltaT";
+    dict.fail("writeInterval", msg.str());
+  }
+  const double span = t.endTime - t.startTime;
+  const double shortestStep = t.adjustTimeStep ? t.minDeltaT : t.deltaT;
+  if (span < shortestStep) {
+    std::ostringstream msg;
+    msg << "expected endTime at least " << (t.adjustTimeStep ? "minDeltaT" : "deltaT") << " (" << shortestStep
+        << " s) after startTime (" << t.startTime << " s), got " << t.endTime << ": the run would take no step";
+    dict.fail("endTime", msg.str());
+  }
+  // A step count no machine finishes, or a step too small to change t at all (a run that never ends).
+  constexpr double kMaxSteps = 1e10;
+  if (!t.adjustTimeStep && (span / t.deltaT > kMaxSteps || t.endTime + t.deltaT == t.endTime)) {
+    std::ostringstream msg;
+    msg << "expected deltaT of at least " << span / kMaxSteps << " s (" << kMaxSteps
+        << " steps from startTime to endTime), got " << t.deltaT;
+    dict.fail("deltaT", msg.str());
+  }
   const std::string stopAt = dict.getWord("stopAt", {"endTime", "writeNow", "noWriteNow", "nextWrite"}, "endTime");
   t.stopAt = stopAt == "writeNow"     ? StopAt::WriteNow
              : stopAt == "noWriteNow" ? StopAt::NoWriteNow
@@ -49,6 +74,10 @@ TimeControl TimeControl::read(const Dictionary& dict) {
                                       : StopAt::EndTime;
   t.runTimeModifiable = dict.getBool("runTimeModifiable", true);
   return t;
+}
+
+double TimeControl::endSlack() const {
+  return adjustTimeStep ? 1e-9 * std::max(1.0, endTime) : 0.5 * deltaT;
 }
 
 } // namespace poro

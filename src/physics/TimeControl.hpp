@@ -29,7 +29,15 @@ struct TimeControl {
   bool runTimeModifiable = true; ///< re-read system/controlDict when it changes while running
 
   /// Reads and validates the time keys (does not check for unknown keys: the file has output keys too).
+  /// Refuses settings that would run no step or an unbounded number of them, and write intervals that
+  /// adjustable steps could only meet by going below minDeltaT.
   static TimeControl read(const Dictionary& dict);
+
+  /// How close to endTime a run counts as finished: fixed steps accumulate round-off in t (half a step);
+  /// adjustable steps land on endTime exactly.
+  double endSlack() const;
+  /// True when a run at `time` has nothing left to do.
+  bool endTimeReached(double time) const { return !(time < endTime - endSlack()); }
 };
 
 } // namespace poro

@@ -23,9 +23,12 @@
 
 namespace poro::test {
 
-/// A case directory outside tutorials/ to copy (CaseRunner's second constructor).
+/// A case directory to copy (CaseRunner's second constructor). `inputsOnly` copies system/ and constant/ (the
+/// dictionaries and shipped geometry) and nothing a run of the source left there (time directories, case.pvd,
+/// logs, postProcessing): a tutorial that ./Allrun ran must not hand its output to a test.
 struct CaseSource {
   std::filesystem::path dir;
+  bool inputsOnly = false;
 };
 
 class CaseRunner {
@@ -33,7 +36,7 @@ public:
   /// Copies tutorials/<tutorial> to a fresh scratch directory named after the running test (or `name`
   /// outside a test, e.g. in SetUpTestSuite) and numbered, so that two runners of one test never share it.
   explicit CaseRunner(const std::string& tutorial, std::string name = "")
-      : CaseRunner(CaseSource{std::filesystem::path(POROSPH_TUTORIALS) / tutorial}, std::move(name)) {}
+      : CaseRunner(CaseSource{std::filesystem::path(POROSPH_TUTORIALS) / tutorial, true}, std::move(name)) {}
 
   /// Copies any case directory (e.g. the base of tests/data/bad) the same way.
   explicit CaseRunner(const CaseSource& source, std::string name = "") {
@@ -46,7 +49,13 @@ public:
            ("porosph_" + name + "_" + std::to_string(::getpid()) + "_" + std::to_string(++created));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
-    std::filesystem::copy(source.dir, dir_, std::filesystem::copy_options::recursive);
+    if (!source.inputsOnly) {
+      std::filesystem::copy(source.dir, dir_, std::filesystem::copy_options::recursive);
+      return;
+    }
+    for (const char* inputs : {"system", "constant"})
+      if (std::filesystem::exists(source.dir / inputs))
+        std::filesystem::copy(source.dir / inputs, dir_ / inputs, std::filesystem::copy_options::recursive);
   }
   ~CaseRunner() {
     if (!::testing::Test::HasFailure()) std::filesystem::remove_all(dir_); // keep a failed case to look at

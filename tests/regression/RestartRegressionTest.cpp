@@ -85,6 +85,68 @@ TEST(Restart, SigtermWritesTheCurrentStepAndTheRunResumesBitForBit) {
   expectIdentical(*straight.particles("0.1", 0.005).find("fluid"), *killed.particles("0.1", 0.005).find("fluid"));
 }
 
+/// Starts the small dam break in the background and waits until step 20 of about 100 is logged.
+pid_t startAndWaitForStep20(const CaseRunner& runner) {
+  const pid_t pid = runner.startSolver("1");
+  for (int wait = 0; wait < 6000 && runner.read("log.poroSph").find("(step 20)") == std::string::npos; ++wait)
+    ::usleep(10000);
+  return pid;
+}
+
+TEST(Restart, SighupStopsTheRunLikeSigterm) {
+  // A closed terminal sends SIGHUP: the run writes its current step and says how to resume, as for SIGTERM.
+  CaseRunner runner("fluid/damBreak");
+  makeSmallDamBreak(runner, "0.1");
+  ASSERT_EQ(runner.sample(), 0);
+  const pid_t pid = startAndWaitForStep20(runner);
+  ASSERT_GT(pid, 0);
+  ASSERT_EQ(::kill(pid, SIGHUP), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  const std::string log = runner.read("log.poroSph");
+  ASSERT_TRUE(WIFEXITED(status)) << log;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << log;
+  EXPECT_NE(log.find("SIGHUP received: stopped after step"), std::string::npos) << log;
+  const auto times = listTimeDirectories(runner.dir());
+  ASSERT_GE(times.size(), 2u);
+  EXPECT_LT(times.back().time, 0.1 - 1e-9);
+}
+
+TEST(Restart, ASecondSignalStopsAtOnceAndEarlierTimesStayIntact) {
+  // Ctrl-C, then Ctrl-C again (or kill): the second does not wait for the step; what is on disk stays usable.
+  CaseRunner runner("fluid/damBreak");
+  makeSmallDamBreak(runner, "0.1");
+  ASSERT_EQ(runner.sample(), 0);
+  const pid_t pid = startAndWaitForStep20(runner);
+  ASSERT_GT(pid, 0);
+  // Two different signals: two of one kind sent before the first is handled would merge into one.
+  ASSERT_EQ(::kill(pid, SIGINT), 0);
+  ASSERT_EQ(::kill(pid, SIGTERM), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  const std::string log = runner.read("log.poroSph");
+  ASSERT_TRUE(WIFEXITED(status)) << log;
+  EXPECT_GT(WEXITSTATUS(status), 128) << log;
+  EXPECT_NE(log.find("Second stop signal: stopping at once"), std::string::npos) << log;
+  EXPECT_EQ(log.find("received: stopped after step"), std::string::npos) << "the step was not waited for";
+  std::filesystem::remove(runner.dir() / "log.poroSph");
+  ASSERT_EQ(runner.solve("-threads 1"), 0) << runner.read("log.poroSph");
+  EXPECT_TRUE(std::filesystem::exists(runner.dir() / "0.1" / "fluid.vtp"));
+}
+
+TEST(Restart, AFinishedCaseRunAgainSaysSoAndExitsZero) {
+  // As OpenFOAM: a second ./Allrun of a finished case is not an error; nothing is rewritten.
+  CaseRunner runner("fluid/damBreak");
+  makeSmallDamBreak(runner, "0.05");
+  ASSERT_EQ(runner.sample(), 0);
+  ASSERT_EQ(runner.solve(), 0) << runner.read("log.poroSph");
+  const auto before = std::filesystem::last_write_time(runner.dir() / "0.05" / "fluid.vtp");
+  std::filesystem::remove(runner.dir() / "log.poroSph");
+  ASSERT_EQ(runner.solve(), 0) << runner.read("log.poroSph");
+  EXPECT_NE(runner.read("log.poroSph").find("has reached endTime 0.05"), std::string::npos) << runner.read("log.poroSph");
+  EXPECT_EQ(std::filesystem::last_write_time(runner.dir() / "0.05" / "fluid.vtp"), before);
+}
+
 void makeCoarsePorousWall(CaseRunner& runner, const std::string& endTime) {
   runner.setKey("system/particleDict", "particleRadius", "0.02");
   runner.replace("system/particleDict", "fixed: true", "fixed: false"); // the solid moves too

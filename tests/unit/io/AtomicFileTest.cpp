@@ -7,6 +7,7 @@
 
 #include <cstring>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace poro {
@@ -104,6 +105,25 @@ TEST(AtomicFile, RenameOfAMissingSourceIsAnOutputError) {
     EXPECT_TRUE(contains(e.what(), (dir / "missing").string()));
   }
   EXPECT_TRUE(std::filesystem::is_directory(dir / "keep")) << "target must survive a failed rename";
+}
+
+TEST(AtomicFile, AFailedReplaceKeepsTheOldDirectory) {
+  // A rename across file systems fails after the target was dealt with: the old directory must still be there
+  // (it used to be deleted first, so an output error lost a time directory).
+  const std::filesystem::path otherDevice = "/dev/shm";
+  ScratchDirectory dir;
+  struct stat a {}, b {};
+  if (::stat(otherDevice.c_str(), &a) != 0 || ::stat(dir.path().c_str(), &b) != 0 || a.st_dev == b.st_dev)
+    GTEST_SKIP() << "needs " << otherDevice << " on another file system than " << dir.path();
+  const auto from = otherDevice / ("porosph-new-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(from);
+  test::writeAll(from / "fluid.vtp", "new");
+  std::filesystem::create_directories(dir / "0.2");
+  test::writeAll(dir / "0.2/fluid.vtp", "old");
+  EXPECT_THROW(renameAtomically(from, dir / "0.2"), OutputError);
+  std::filesystem::remove_all(from);
+  EXPECT_EQ(readAll(dir / "0.2/fluid.vtp"), "old");
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"0.2"}) << "nothing left aside";
 }
 
 } // namespace
