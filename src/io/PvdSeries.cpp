@@ -120,8 +120,8 @@ void PvdSeries::removeTime(const std::string& timeName) {
 }
 
 void PvdSeries::write(const fs::path& path) const {
-  // Parts in order of first appearance (their pvd part index) and, per part, its entries by time: a part
-  // without an entry at some time shows its latest earlier file there.
+  // Parts in order of first appearance (their pvd part index) and, per part, its entries by time: a static
+  // part shows its one file at every later time.
   std::vector<std::string> parts;
   std::vector<double> times; // in order of first appearance
   std::map<std::string, std::map<double, std::string>> filesOf;
@@ -130,6 +130,10 @@ void PvdSeries::write(const fs::path& path) const {
     if (std::find(times.begin(), times.end(), entry.time) == times.end()) times.push_back(entry.time);
     filesOf[entry.part][entry.time] = entry.file;
   }
+  const double first = times.empty() ? 0.0 : *std::min_element(times.begin(), times.end());
+  const auto isStatic = [&](const std::map<double, std::string>& files) {
+    return files.size() == 1 && files.begin()->first == first;
+  };
   std::ostringstream out;
   out << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"Collection\" version=\"0.1\">\n"
@@ -140,6 +144,7 @@ void PvdSeries::write(const fs::path& path) const {
       auto latest = files.upper_bound(time);
       if (latest == files.begin()) continue; // the part does not exist yet
       --latest;
+      if (latest->first != time && !isStatic(files)) continue; // no file of this time
       out << "    <DataSet timestep=\"" << formatTime(time) << "\" group=\"\" part=\"" << index << "\" name=\""
           << escapeXml(parts[index]) << "\" file=\"" << escapeXml(latest->second) << "\"/>\n";
     }

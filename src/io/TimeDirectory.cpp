@@ -262,6 +262,8 @@ ParticleSystem readParticles(const fs::path& caseDir, const std::string& name, d
   std::vector<fs::path> files;
   for (const auto& entry : fs::directory_iterator(dir)) {
     if (entry.path().extension() != ".vtp") continue;
+    const std::string file = entry.path().filename().string();
+    if (file == kFluidSurfaceFile || file == kPorousSurfaceFile) continue; // derived, not particles
     // Anything else would be silently left out of the run (e.g. a porous set of an older layout, sand.vtp).
     if (!isParticleFile(entry.path()))
       throw InputError(entry.path().string() +

@@ -15,6 +15,11 @@
 
 namespace poro {
 
+/// Surfaces that utilities/fluidSurface adds to a time directory (and to case.pvd, named by their stem). They are
+/// derived from the particles, so readParticles skips them and a restart is unaffected by them.
+inline constexpr const char* kFluidSurfaceFile = "fluidSurface.vtp";
+inline constexpr const char* kPorousSurfaceFile = "porousSurface.vtp";
+
 /// The directory name of a time value: shortest decimal that reads back within 1e-10 relative ("0.1", "2.5").
 std::string timeName(double time);
 
@@ -33,8 +38,8 @@ RunState readRunState(const std::filesystem::path& timeDir);
 /// Loads every particle set of a time directory: `fluid.vtp`, `porous.vtp` and `boundary.vtp` (or
 /// `0/boundary.vtp` when the directory has no boundary of its own), in ParticleSystem order. `fluid` and
 /// `boundary` name the fluid and wall sets; porous.vtp is split by its materialId into one set per material
-/// of `materials` (constant/porosityProperties order), named after the material (splitPorousSet). Any other
-/// .vtp file in the directory, a missing fluid.vtp and a porous.vtp the materials cannot split are InputErrors,
+/// of `materials` (constant/porosityProperties order), named after the material (splitPorousSet). The surfaces
+/// above are skipped; any other .vtp file in the directory, a missing fluid.vtp and a porous.vtp the materials cannot split are InputErrors,
 /// and so are a file without the array 'id' or with two particles of the same id, a `particleRadius` other than
 /// the one uniform/time records, and, when the case has a readable system/particleDict, a missing file of a
 /// phase its regions sample (a deleted boundary.vtp or porous.vtp).
