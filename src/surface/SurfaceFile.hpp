@@ -1,0 +1,14 @@
+#pragma once
+/// Writing a TriangleSurface as VTK XML PolyData (.vtp), the format of the time directories (ParaView opens it).
+
+#include "surface/TriangleSurface.hpp"
+
+#include <filesystem>
+
+namespace poro {
+
+/// Writes `surface` (Float32 points and point fields, triangles as polys; binary, zlib-compressed) atomically:
+/// to a temporary sibling, renamed over `file` when complete. Throws OutputError naming the file.
+void writeSurface(const TriangleSurface& surface, const std::filesystem::path& file);
+
+} // namespace poro
