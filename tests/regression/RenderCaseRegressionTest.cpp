@@ -1,0 +1,153 @@
+// fluidSurface and renderCase end to end through the executables (issue 22): a tiny synthetic case whose porous
+// block is dry on its left half and soaked on its right, drawn head on; the picture must show the dry half light
+// and the wet half dark. Without DISPLAY renderCase runs itself under xvfb-run (CI).
+
+#include "CaseRunner.hpp"
+
+#include "physics/FieldNames.hpp"
+#include "render/ColourMap.hpp"
+#include "render/PngImage.hpp"
+
+#include <cstdlib>
+
+namespace poro::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double kR = 0.01;
+
+const char* const kParticleDict = R"(particleRadius: 0.01
+regions:
+  - {name: drop, phase: fluid, shape: box, min: [0.5, 0, 0], max: [0.54, 0.04, 0.04]}
+  - {name: block, phase: porous, material: foam, shape: box, min: [0, 0, 0], max: [0.16, 0.16, 0.08], fixed: true}
+)";
+// Head on at the block's front face (z = 0.08), 20 degrees: the face spans the middle of a 200 px square.
+const char* const kRenderDict = R"(imageSize: [200, 200]
+background: [0, 0, 0]
+timeLabel: false
+legend: false
+camera: {position: [0.08, 0.08, 1.0], focalPoint: [0.08, 0.08, 0.04], viewUp: [0, 1, 0], viewAngle: 20}
+)";
+
+/// Time 0 as sampled (no saturation) and time 1 with the left half (x < 0.08) dry, the right half soaked.
+void writeTime(const fs::path& caseDir, double t) {
+  ParticleSystem ps(kR);
+  ParticleSet& fluid = ps.add("fluid", SetKind::Fluid);
+  fluid.resize(8);
+  for (int i = 0; i < 8; ++i) {
+    fluid.x()[i] = Vec3(0.5 + kR + 2 * kR * (i % 2), kR + 2 * kR * (i / 2 % 2), kR + 2 * kR * (i / 4));
+    fluid.v()[i] = Vec3(0.0, -1.0, 0.0);
+    fluid.integer(field::id)[i] = i;
+  }
+  ParticleSet& foam = ps.add("foam", SetKind::Porous);
+  foam.addInt(field::materialId, Restart);
+  foam.resize(8 * 8 * 4);
+  auto* saturation = t > 0 ? &foam.addReal(field::saturation, Output) : nullptr;
+  for (int i = 0; i < 256; ++i) {
+    foam.x()[i] = Vec3(kR + 2 * kR * (i % 8), kR + 2 * kR * (i / 8 % 8), kR + 2 * kR * (i / 64));
+    foam.integer(field::id)[i] = 8 + i;
+    foam.integer(field::objectId)[i] = 1;
+    if (saturation) (*saturation)[i] = foam.x()[i].x() < 0.08 ? 0.0 : 1.0;
+  }
+  TimeWriter::writeAll(caseDir, ps, RunState{t, static_cast<long long>(t * 100), 0.001}, true);
+}
+
+class RenderCase : public ::testing::Test {
+protected:
+  RenderCase() : runner_(CaseSource{emptySource()}) {
+    fs::create_directories(runner_.dir() / "system");
+    fs::create_directories(runner_.dir() / "constant");
+    runner_.write("system/particleDict", kParticleDict);
+    runner_.write("constant/fluidProperties", "density: 1000\nviscosity: 0\ngravity: [0, -9.81, 0]\n");
+    runner_.write("constant/porosityProperties", "foam:\n  porosity: 0.5\n  bulkDensity: 500\n");
+    writeTime(runner_.dir(), 1.0);
+    writeTime(runner_.dir(), 0.0); // last: writeAll starts case.pvd afresh with time 0 ...
+    PvdSeries series = PvdSeries::read(runner_.dir() / "case.pvd");
+    for (const char* part : {"fluid", "porous"}) series.add(1.0, part, std::string("1/") + part + ".vtp");
+    series.write(runner_.dir() / "case.pvd"); // ... and time 1 joins it as poroSph would have written it
+  }
+  static fs::path emptySource() {
+    const fs::path source = fs::temp_directory_path() / ("porosph_empty_render_case_" + std::to_string(::getpid()));
+    fs::create_directories(source);
+    return source;
+  }
+  int render(const std::string& arguments) const { return runner_.run(POROSPH_RENDER, arguments, 300); }
+  std::string log() const { return runner_.read("log.renderCase"); }
+
+  CaseRunner runner_;
+};
+
+/// CIE lightness of a pixel.
+double lightness(const std::array<std::uint8_t, 3>& p) {
+  return ColourMap::lightness(Vec3(p[0] / 255.0, p[1] / 255.0, p[2] / 255.0));
+}
+
+/// The picture of time 1 shows the block (not the black background), its dry half light and its wet half dark
+/// and blue, at the places where the camera puts them.
+void expectDryLeftWetRight(const fs::path& png) {
+  const PngImage image = PngImage::read(png);
+  ASSERT_EQ(image.width, 200);
+  ASSERT_EQ(image.height, 200);
+  // The front layer's particle centres (z = 0.07) at x = 0.05 (dry) and 0.11 (wet), y = 0.07 and 0.09 land at
+  // 100 -+ 0.03 / (0.93 tan 10 deg) 100 px = 82 and 118 across, 106 and 94 down (on a particle of show:
+  // particles, where its ball is lit; inside the face of the surface).
+  int covered = 0;
+  for (const auto& p : image.rgb) covered += p[0] + p[1] + p[2] > 60;
+  // The block's face covers 98 px square, a quarter of the picture (balls on a lattice leave a fifth of it open).
+  EXPECT_GT(covered, 200 * 200 / 6) << "the image is (nearly) empty";
+  for (int y : {94, 106}) {
+    const auto dry = image.at(82, y), wet = image.at(118, y);
+    SCOPED_TRACE("row " + std::to_string(y));
+    EXPECT_GT(lightness(dry), 70.0) << "dry is light: " << int(dry[0]) << " " << int(dry[1]) << " " << int(dry[2]);
+    EXPECT_LT(lightness(wet), 45.0) << "wet is dark: " << int(wet[0]) << " " << int(wet[1]) << " " << int(wet[2]);
+    EXPECT_GT(wet[2], wet[0] + 40) << "wet is blue";
+  }
+}
+
+TEST_F(RenderCase, DryAndWetParticlesDifferInColour) {
+  runner_.write("system/renderDict", std::string(kRenderDict) + "porous: {show: particles}\n");
+  ASSERT_EQ(render("-time 1"), 0) << log();
+  expectDryLeftWetRight(runner_.dir() / "postProcessing/renderCase/1.png");
+}
+
+TEST_F(RenderCase, TheSurfaceDarkensWhereTheBlockIsWet) {
+  runner_.write("system/renderDict", kRenderDict);
+  ASSERT_EQ(render(""), 0) << log();
+  EXPECT_TRUE(fs::exists(runner_.dir() / "postProcessing/renderCase/0.png")) << log();
+  expectDryLeftWetRight(runner_.dir() / "postProcessing/renderCase/1.png");
+  // At time 0 (sampled, no saturation yet) the whole face is dry.
+  const PngImage first = PngImage::read(runner_.dir() / "postProcessing/renderCase/0.png");
+  EXPECT_GT(lightness(first.at(118, 106)), 70.0);
+}
+
+TEST_F(RenderCase, TheMovieNeedsFfmpegAndSaysSo) {
+  runner_.write("system/renderDict", kRenderDict);
+  const int status = render("-movie -size 64x64");
+  if (std::system("command -v ffmpeg > /dev/null 2>&1") == 0) {
+    ASSERT_EQ(status, 0) << log();
+    EXPECT_GT(fs::file_size(runner_.dir() / "postProcessing/renderCase/movie.mp4"), 0u);
+  } else {
+    EXPECT_EQ(status, 1);
+    EXPECT_NE(log().find("-movie needs ffmpeg, which is not installed (apt-get install ffmpeg)"), std::string::npos)
+        << log();
+  }
+}
+
+TEST_F(RenderCase, FluidSurfaceWritesClosedSurfacesAndListsThem) {
+  ASSERT_EQ(runner_.run(POROSPH_SURFACE, "-latestTime", 120), 0) << runner_.read("log.fluidSurface");
+  EXPECT_TRUE(fs::exists(runner_.dir() / "1/fluidSurface.vtp"));
+  EXPECT_TRUE(fs::exists(runner_.dir() / "1/porousSurface.vtp"));
+  EXPECT_FALSE(fs::exists(runner_.dir() / "0/fluidSurface.vtp"));
+  const std::string pvd = runner_.read("case.pvd");
+  EXPECT_NE(pvd.find("name=\"fluidSurface\" file=\"1/fluidSurface.vtp\""), std::string::npos) << pvd;
+  EXPECT_NE(pvd.find("name=\"porousSurface\" file=\"1/porousSurface.vtp\""), std::string::npos) << pvd;
+  // The 8-particle drop: a closed surface of (nearly) its 8 (2r)^3, the log says so.
+  const std::string log = runner_.read("log.fluidSurface");
+  EXPECT_NE(log.find("(8 particles: 6.4e-05 m^3)"), std::string::npos) << log;
+  // The particles stay readable: the analysis and a restart skip the surfaces.
+  EXPECT_NO_THROW(runner_.particles("1", kR));
+}
+
+} // namespace
+} // namespace poro::test
