@@ -2,6 +2,7 @@
 
 #include "core/Error.hpp"
 #include "render/ColourMap.hpp"
+#include "surface/ShepardInterpolation.hpp"
 #include "surface/SurfacePolyData.hpp"
 
 #include <vtkActor.h>
@@ -155,60 +156,49 @@ void FrameRenderer::Impl::addSurface(const SceneLayer& layer, vtkLookupTable* ta
 }
 
 void FrameRenderer::Impl::addCap(const SceneLayer& layer, vtkLookupTable* table, bool coloured) {
-  // The body's inside on the plane: the colour field's grid cut by the plane, kept where c >= iso, coloured by
-  // the field's Shepard average (sum V W f) / c.
+  // The body's inside on the plane: the colour field's grid cut by the plane, kept where c >= iso, coloured by the
+  // particles' field read off at the cap's points.
   const ScalarGrid& grid = *layer.grid;
   if (grid.points() == 0) return;
   vtkNew<vtkImageData> image;
   image->SetOrigin(grid.origin.x(), grid.origin.y(), grid.origin.z());
   image->SetSpacing(grid.spacing, grid.spacing, grid.spacing);
   image->SetDimensions(static_cast<int>(grid.dims[0]), static_cast<int>(grid.dims[1]), static_cast<int>(grid.dims[2]));
-  std::vector<std::size_t> channels{0};
-  channels.insert(channels.end(), layer.valueChannels.begin(), layer.valueChannels.end());
-  for (std::size_t c : channels) {
-    vtkNew<vtkFloatArray> values;
-    values->SetName(grid.names[c].c_str());
-    values->SetArray(const_cast<float*>(grid.channels[c].data()), static_cast<vtkIdType>(grid.points()), 1);
-    image->GetPointData()->AddArray(values);
-  }
+  vtkNew<vtkFloatArray> c;
+  c->SetName("c");
+  c->SetArray(const_cast<float*>(grid.values.data()), static_cast<vtkIdType>(grid.points()), 1);
+  image->GetPointData()->SetScalars(c);
   vtkNew<vtkPlane> plane;
   plane->SetOrigin(settings.clip->origin.data());
   plane->SetNormal(settings.clip->normal.data());
   vtkNew<vtkCutter> cutter;
   cutter->SetInputData(image);
   cutter->SetCutFunction(plane);
-  cutter->Update();
-  vtkPolyData* cut = cutter->GetOutput();
-  if (cut->GetNumberOfPoints() == 0) return;
-  vtkDataArray* c = cut->GetPointData()->GetArray(grid.names[0].c_str());
-  vtkNew<vtkFloatArray> value;
-  value->SetName("value");
-  value->SetNumberOfValues(cut->GetNumberOfPoints());
-  for (vtkIdType p = 0; p < cut->GetNumberOfPoints(); ++p) {
-    double sum = 0.0;
-    for (std::size_t k = 1; k < channels.size(); ++k) {
-      const double f = cut->GetPointData()->GetArray(grid.names[channels[k]].c_str())->GetComponent(p, 0);
-      sum += f * f;
-    }
-    const double weight = c->GetComponent(p, 0);
-    value->SetValue(p, static_cast<float>(weight > 0.0 ? std::sqrt(sum) / weight : 0.0));
-  }
-  vtkNew<vtkFloatArray> colourField;
-  colourField->DeepCopy(c);
-  colourField->SetName("c");
-  vtkNew<vtkPolyData> cap;
-  cap->ShallowCopy(cut);
-  cap->GetPointData()->Initialize();
-  cap->GetPointData()->AddArray(value);
-  cap->GetPointData()->SetScalars(colourField);
-  vtkNew<vtkClipPolyData> inside; // keeps c >= iso, interpolating `value` along
-  inside->SetInputData(cap);
+  vtkNew<vtkClipPolyData> inside; // keeps c >= iso
+  inside->SetInputConnection(cutter->GetOutputPort());
   inside->SetValue(layer.iso);
   inside->Update();
-  vtkNew<vtkPolyData> shown;
-  shown->ShallowCopy(inside->GetOutput());
-  shown->GetPointData()->SetActiveScalars("value");
-  renderer->AddActor(actorOf(nullptr, shown, *layer.style, table, coloured));
+  vtkNew<vtkPolyData> cap;
+  cap->ShallowCopy(inside->GetOutput());
+  if (cap->GetNumberOfPoints() == 0) return;
+  if (coloured && layer.cloud) {
+    std::vector<Vec3> points(static_cast<std::size_t>(cap->GetNumberOfPoints()));
+    for (vtkIdType p = 0; p < cap->GetNumberOfPoints(); ++p) cap->GetPoint(p, points[static_cast<std::size_t>(p)].data());
+    std::vector<double> values(points.size(), 0.0);
+    const ShepardInterpolation interpolation(*layer.cloud, layer.supportRadius);
+    for (const ParticleField& f : layer.cloud->fields) {
+      if (f.name != layer.style->colourBy) continue;
+      const std::vector<double> at = interpolation.at(points, f);
+      const auto k = static_cast<std::size_t>(f.components);
+      for (std::size_t p = 0; p < points.size(); ++p) {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < k; ++i) sum += at[p * k + i] * at[p * k + i];
+        values[p] = std::sqrt(sum);
+      }
+    }
+    setValues(cap, values);
+  }
+  renderer->AddActor(actorOf(nullptr, cap, *layer.style, table, coloured));
 }
 
 void FrameRenderer::Impl::addParticles(const SceneLayer& layer, vtkLookupTable* table, bool coloured) {

@@ -2,7 +2,7 @@
 /// What one picture shows, without VTK: SceneBuilder makes it from a time directory, FrameRenderer draws it.
 
 #include "render/RenderSettings.hpp"
-#include "surface/ScalarGrid.hpp"
+#include "surface/ColourField.hpp"
 #include "surface/TriangleSurface.hpp"
 
 #include <array>
@@ -21,11 +21,12 @@ struct SceneLayer {
   double particleRadius = 0.0;
   std::vector<double> values;
   std::vector<std::array<Vec3, 2>> containers; ///< inner boxes (min, max) of container walls
-  /// The colour field the surface was contoured from, for the cap where a clip plane cuts the body open:
-  /// channel 0 is c, `valueChannels` hold sum V W f of the coloured field (1 or 3 components), read off as |f|.
+  /// For the cap where a clip plane cuts the body open: the colour field the surface was contoured from (the cap
+  /// is where c >= iso on the plane) and the particles, whose field colourBy colours the cap (|f| for vectors).
   std::optional<ScalarGrid> grid;
   double iso = 0.5;
-  std::vector<std::size_t> valueChannels;
+  std::optional<ParticleCloud> cloud;
+  double supportRadius = 0.0;
 };
 
 struct Scene {

@@ -49,17 +49,6 @@ std::vector<double> surfaceValues(const TriangleSurface& surface, const std::str
   return values;
 }
 
-/// A copy of the colour field alone: what trimContact samples.
-ScalarGrid colourOnly(const ScalarGrid& grid) {
-  ScalarGrid c;
-  c.origin = grid.origin;
-  c.spacing = grid.spacing;
-  c.dims = grid.dims;
-  if (!grid.channels.empty()) c.channels.push_back(grid.channels[0]);
-  c.names.push_back("c");
-  return c;
-}
-
 bool clips(const RenderSettings& render, const std::string& set) {
   return render.clip && std::find(render.clip->sets.begin(), render.clip->sets.end(), set) != render.clip->sets.end();
 }
@@ -137,18 +126,19 @@ Scene SceneBuilder::build(const ParticleSystem& particles, const std::string& ti
       continue;
     }
     const bool fluid = style->set == "fluid";
-    const ParticleCloud cloud = fluid ? fluidCloud(particles, surface_) : porousCloud(particles);
+    ParticleCloud cloud = fluid ? fluidCloud(particles, surface_) : porousCloud(particles);
     if (cloud.positions.empty()) continue;
-    Reconstruction made = reconstruct(cloud, fluid ? surface_.fluid : surface_.porous, r);
+    const ReconstructionSettings& settings = fluid ? surface_.fluid : surface_.porous;
+    Reconstruction made = reconstruct(cloud, settings, r);
     layer.surface = std::move(made.surface);
     layer.values = surfaceValues(layer.surface, style->colourBy);
     if (fluid) trimContact(layer.surface);
-    else contact_.push_back(colourOnly(made.grid));
+    else contact_.push_back(made.grid);
     if (clips(render_, style->set)) {
-      for (std::size_t c = 1; c < made.grid.names.size(); ++c)
-        if (!style->colourBy.empty() && made.grid.names[c].rfind(style->colourBy, 0) == 0) layer.valueChannels.push_back(c);
       layer.grid = std::move(made.grid);
       layer.iso = made.iso;
+      layer.supportRadius = settings.kernelRadius * r;
+      layer.cloud = std::move(cloud);
     }
     scene.layers.push_back(std::move(layer));
   }
@@ -172,7 +162,6 @@ SceneLayer SceneBuilder::wallLayer(const ParticleSystem& particles, const std::s
       }
     }
     staticWalls_ = reconstruct(bodies, ReconstructionSettings{}, particles.particleRadius());
-    staticWalls_->grid = colourOnly(staticWalls_->grid);
   }
   layer.surface = staticWalls_->surface;
   if (staticWalls_->grid.points() > 0) contact_.push_back(staticWalls_->grid);
@@ -184,7 +173,7 @@ void SceneBuilder::trimContact(TriangleSurface& water) const {
   std::vector<char> touching(water.points.size(), 0);
   for (std::size_t p = 0; p < water.points.size(); ++p)
     for (const ScalarGrid& grid : contact_)
-      if (grid.sample(0, water.points[p]) >= 0.2) touching[p] = 1;
+      if (grid.sample(water.points[p]) >= 0.2) touching[p] = 1;
   const auto on = [&](Index p) { return touching[static_cast<std::size_t>(p)] != 0; };
   water.triangles.erase(std::remove_if(water.triangles.begin(), water.triangles.end(),
                                        [&](const auto& t) { return on(t[0]) && on(t[1]) && on(t[2]); }),

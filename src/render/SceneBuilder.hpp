@@ -42,7 +42,7 @@ private:
   std::vector<std::array<Vec3, 2>> containers_;
   std::vector<std::int64_t> containerIds_; ///< objectIds (region indices) of the containers
   std::optional<Reconstruction> staticWalls_;
-  std::vector<ScalarGrid> contact_; ///< colour fields (channel c only) of this frame's porous and wall bodies
+  std::vector<ScalarGrid> contact_; ///< colour fields of this frame's porous and wall bodies
 };
 
 } // namespace poro

@@ -14,14 +14,6 @@ namespace {
 
 constexpr std::int64_t kSlabLayers = 8; // grid layers per parallel task
 
-/// The names of the grid channels: "c", then one per field component.
-std::vector<std::string> channelNames(const ParticleCloud& cloud) {
-  std::vector<std::string> names{"c"};
-  for (const ParticleField& f : cloud.fields)
-    for (int c = 0; c < f.components; ++c) names.push_back(c == 0 ? f.name : f.name + "_" + std::to_string(c));
-  return names;
-}
-
 /// Bounds of the finite particles; false when there are none.
 bool finiteBounds(const std::vector<Vec3>& x, Vec3& lo, Vec3& hi) {
   bool any = false;
@@ -39,8 +31,6 @@ bool finiteBounds(const std::vector<Vec3>& x, Vec3& lo, Vec3& hi) {
 ScalarGrid colourField(const ParticleCloud& cloud, double supportRadius, double spacing, const std::string& where) {
   ScalarGrid grid;
   grid.spacing = spacing;
-  grid.names = channelNames(cloud);
-  grid.channels.resize(grid.names.size());
   Vec3 lo, hi;
   if (!finiteBounds(cloud.positions, lo, hi)) return grid;
 
@@ -59,7 +49,7 @@ ScalarGrid colourField(const ParticleCloud& cloud, double supportRadius, double 
         << lo.transpose() << "] to [" << hi.transpose() << "]; raise gridSpacing";
     throw InputError(msg.str());
   }
-  for (auto& channel : grid.channels) channel.assign(grid.points(), 0.0f);
+  grid.values.assign(grid.points(), 0.0f);
 
   // Particles by grid layer (a stable counting sort), so that a slab finds the particles reaching it at once.
   const std::int64_t nz = grid.dims[2];
@@ -91,22 +81,14 @@ ScalarGrid colourField(const ParticleCloud& cloud, double supportRadius, double 
   const std::int64_t reach = static_cast<std::int64_t>(std::ceil(supportRadius / spacing));
   const std::int64_t slabs = (nz + kSlabLayers - 1) / kSlabLayers;
   const std::int64_t nx = grid.dims[0], ny = grid.dims[1];
-  const std::size_t channels = grid.channels.size();
-  std::vector<float*> out(channels);
-  for (std::size_t c = 0; c < channels; ++c) out[c] = grid.channels[c].data();
+  float* const out = grid.values.data();
   parallel::forEachTask(static_cast<std::size_t>(slabs), [&](std::size_t slab) {
     const std::int64_t k0 = static_cast<std::int64_t>(slab) * kSlabLayers, k1 = std::min(nz, k0 + kSlabLayers);
     const std::size_t first = start[static_cast<std::size_t>(std::max<std::int64_t>(0, k0 - reach))];
     const std::size_t last = start[static_cast<std::size_t>(std::min(nz, k1 + reach))];
-    std::vector<float> weights(channels); // V_p and V_p f_p per channel
-    std::vector<float> row;
     for (std::size_t n = first; n < last; ++n) {
       const std::size_t p = order[n];
-      weights[0] = static_cast<float>(cloud.volumes[p]);
-      std::size_t channel = 1;
-      for (const ParticleField& f : cloud.fields)
-        for (std::size_t c = 0; c < static_cast<std::size_t>(f.components); ++c)
-          weights[channel++] = weights[0] * static_cast<float>(f.values[p * static_cast<std::size_t>(f.components) + c]);
+      const float volume = static_cast<float>(cloud.volumes[p]);
       const Vec3 local = (cloud.positions[p] - grid.origin) / spacing; // in grid units
       const double r = supportRadius / spacing;
       const std::int64_t kLo = std::max(k0, static_cast<std::int64_t>(std::ceil(local.z() - r)));
@@ -123,22 +105,14 @@ ScalarGrid colourField(const ParticleCloud& cloud, double supportRadius, double 
           const double rx = std::sqrt(restY) / spacing;
           const std::int64_t iLo = std::max<std::int64_t>(0, static_cast<std::int64_t>(std::ceil(local.x() - rx)));
           const std::int64_t iHi = std::min(nx - 1, static_cast<std::int64_t>(std::floor(local.x() + rx)));
-          if (iHi < iLo) continue;
-          // Kernel values of the row first, then one tight loop per channel.
-          row.resize(static_cast<std::size_t>(iHi - iLo + 1));
           const double dyz = h2 - restY; // dy^2 + dz^2
+          float* target = out + grid.index(0, j, k);
           for (std::int64_t i = iLo; i <= iHi; ++i) {
             const double dx = (double(i) - local.x()) * spacing;
             const float at = static_cast<float>(dx * dx + dyz) * toTable;
             const std::size_t t = std::min(static_cast<std::size_t>(at), kTable);
             const float frac = std::min(at - static_cast<float>(t), 1.0f);
-            row[static_cast<std::size_t>(i - iLo)] = table[t] + frac * (table[t + 1] - table[t]);
-          }
-          const std::size_t base = grid.index(iLo, j, k);
-          for (std::size_t c = 0; c < channels; ++c) {
-            float* target = out[c] + base;
-            const float weight = weights[c];
-            for (std::size_t i = 0; i < row.size(); ++i) target[i] += weight * row[i];
+            target[i] += volume * (table[t] + frac * (table[t + 1] - table[t]));
           }
         }
       }

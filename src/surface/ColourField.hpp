@@ -4,8 +4,8 @@
 /// (sph/Kernel.hpp). Inside a lattice of spacing 2r with V_j = (2r)^3, c = 1 up to the lattice sum's ripple;
 /// across a flat face it falls from 1 to 0, through 1/2 on the face itself (midway between the last layer and
 /// the first empty one, by symmetry), so c = 0.5 is a surface that encloses the particles' volume; edges and
-/// corners are rounded over about H. Per-particle fields f_j are spread with the same weights,
-/// sum_j V_j W f_j, so that their Shepard average sum V W f / c can be read wherever c > 0.
+/// corners are rounded over about H. Fields are not spread onto the grid: ShepardInterpolation reads them at the
+/// surface's points, a few hundred thousand instead of every grid point.
 
 #include "surface/ScalarGrid.hpp"
 
@@ -14,7 +14,7 @@
 
 namespace poro {
 
-/// A per-particle quantity carried onto the grid, e.g. the velocity (3 components) or the saturation (1).
+/// A per-particle quantity to read off at the surface, e.g. the velocity (3 components) or the saturation (1).
 struct ParticleField {
   std::string name;
   int components = 1;
@@ -27,14 +27,13 @@ struct ParticleCloud {
   std::vector<ParticleField> fields;
 };
 
-/// Grids larger than this many points are refused (4 bytes per point and channel).
+/// Grids larger than this many points are refused.
 inline constexpr double kMaxGridPoints = 2.0e8;
 
-/// c and the spread fields on a grid of the given spacing that reaches H + 2 spacings beyond every finite
-/// particle, so that c = 0 on its border and every contour closes. Channel 0 is "c"; a field of k components
-/// adds channels "<name>", "<name>_1", ... Slabs of the grid are filled in parallel, each point summing its
-/// particles in a fixed order, so the result does not depend on the thread count. No finite particle: a grid
-/// with no points. A grid above kMaxGridPoints throws InputError starting with `where` (the surfaceDict key).
+/// c on a grid of the given spacing that reaches H + 2 spacings beyond every finite particle, so that c = 0 on its
+/// border and every contour closes. Slabs of the grid are filled in parallel, each point summing its particles in
+/// a fixed order, so the result does not depend on the thread count. No finite particle: a grid with no points. A
+/// grid above kMaxGridPoints (4 bytes each) throws InputError starting with `where` (the surfaceDict key).
 ScalarGrid colourField(const ParticleCloud& cloud, double supportRadius, double spacing, const std::string& where);
 
 } // namespace poro

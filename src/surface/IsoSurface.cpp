@@ -16,31 +16,27 @@
 
 namespace poro {
 
-TriangleSurface contour(const ScalarGrid& grid, double iso, const std::vector<GridField>& fields,
-                        int smoothingIterations) {
+TriangleSurface contour(const ScalarGrid& grid, double iso, int smoothingIterations) {
   TriangleSurface surface;
   if (grid.points() == 0) return surface;
   vtkNew<vtkImageData> image;
   image->SetOrigin(grid.origin.x(), grid.origin.y(), grid.origin.z());
   image->SetSpacing(grid.spacing, grid.spacing, grid.spacing);
   image->SetDimensions(static_cast<int>(grid.dims[0]), static_cast<int>(grid.dims[1]), static_cast<int>(grid.dims[2]));
-  for (std::size_t c = 0; c < grid.channels.size(); ++c) {
-    vtkNew<vtkFloatArray> values;
-    values->SetName(grid.names[c].c_str());
-    // Shares the grid's memory (save = 1: VTK never frees or writes it).
-    values->SetArray(const_cast<float*>(grid.channels[c].data()), static_cast<vtkIdType>(grid.points()), 1);
-    image->GetPointData()->AddArray(values);
-  }
+  vtkNew<vtkFloatArray> values;
+  values->SetName("c");
+  // Shares the grid's memory (save = 1: VTK never frees or writes it).
+  values->SetArray(const_cast<float*>(grid.values.data()), static_cast<vtkIdType>(grid.points()), 1);
+  image->GetPointData()->SetScalars(values);
 
   vtkSMPTools::Initialize(parallel::threads());
   vtkNew<vtkFlyingEdges3D> flyingEdges;
   flyingEdges->SetInputData(image);
-  flyingEdges->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, grid.names[0].c_str());
+  flyingEdges->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "c");
   flyingEdges->SetValue(0, iso);
   flyingEdges->ComputeNormalsOff();
   flyingEdges->ComputeGradientsOff();
   flyingEdges->ComputeScalarsOff();
-  flyingEdges->SetInterpolateAttributes(!fields.empty());
   flyingEdges->Update();
   vtkPolyData* mesh = flyingEdges->GetOutput();
   vtkNew<vtkWindowedSincPolyDataFilter> smoother;
@@ -70,17 +66,6 @@ TriangleSurface contour(const ScalarGrid& grid, double iso, const std::vector<Gr
   for (polys->InitTraversal(); polys->GetNextCell(size, ids);)
     if (size == 3) surface.triangles.push_back({static_cast<Index>(ids[0]), static_cast<Index>(ids[1]),
                                                 static_cast<Index>(ids[2])});
-  for (const GridField& f : fields) {
-    TriangleSurface::Field out{f.name, f.components, std::vector<double>(static_cast<std::size_t>(n) *
-                                                                         static_cast<std::size_t>(f.components))};
-    for (int c = 0; c < f.components; ++c) {
-      vtkDataArray* weighted = mesh->GetPointData()->GetArray(grid.names[f.first + static_cast<std::size_t>(c)].c_str());
-      if (!weighted) continue;
-      for (vtkIdType p = 0; p < n; ++p)
-        out.values[static_cast<std::size_t>(p * f.components + c)] = weighted->GetComponent(p, 0) / iso;
-    }
-    surface.fields.push_back(std::move(out));
-  }
   // The case table's winding is fixed, so one test settles the orientation of every component.
   if (surface.enclosedVolume() < 0.0) surface.flip();
   return surface;

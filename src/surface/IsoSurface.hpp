@@ -7,21 +7,12 @@
 
 namespace poro {
 
-/// A field to read off the grid at the surface: channels `first` .. `first + components - 1` hold sum V W f
-/// (ColourField), and f = (sum V W f) / c with c = iso on the surface.
-struct GridField {
-  std::string name;
-  std::size_t first = 1;
-  int components = 1;
-};
-
-/// The contour of channel 0 at `iso`, its triangles facing outward (away from c > iso), with `fields`
-/// interpolated linearly along the grid edges. Closed and manifold when c < iso on the grid's border (as
+/// The contour of the grid at `iso`, its triangles facing outward (away from c > iso). Closed and manifold when
+/// c < iso on the grid's border (as
 /// colourField makes it). `smoothingIterations` > 0 then smooths the mesh with a windowed sinc filter (Taubin
 /// et al. 1996, vtkWindowedSincPolyDataFilter: a low-pass filter that neither shrinks the surface nor changes its
 /// connectivity, so it stays closed), which removes the grid- and particle-scale ripple. Uses
 /// parallel::threads() threads. An empty grid gives an empty surface.
-TriangleSurface contour(const ScalarGrid& grid, double iso, const std::vector<GridField>& fields = {},
-                        int smoothingIterations = 0);
+TriangleSurface contour(const ScalarGrid& grid, double iso, int smoothingIterations = 0);
 
 } // namespace poro

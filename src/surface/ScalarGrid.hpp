@@ -1,33 +1,27 @@
 #pragma once
-/// Values at the points of a uniform grid, one array per channel: what ColourField fills and IsoSurface contours.
+/// Values at the points of a uniform grid: the colour field ColourField fills and IsoSurface contours.
 
 #include "core/Types.hpp"
 
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <string>
 #include <vector>
 
 namespace poro {
 
 struct ScalarGrid {
-  Vec3 origin = Vec3::Zero();              ///< position of point (0, 0, 0) [m]
-  double spacing = 1.0;                    ///< distance between neighbouring points [m]
+  Vec3 origin = Vec3::Zero();                ///< position of point (0, 0, 0) [m]
+  double spacing = 1.0;                      ///< distance between neighbouring points [m]
   std::array<std::int64_t, 3> dims{0, 0, 0}; ///< points per axis
-  /// channels[c][(k dims[1] + j) dims[0] + i] at origin + spacing (i, j, k); channel 0 is the colour field.
-  std::vector<std::vector<float>> channels;
-  std::vector<std::string> names; ///< one per channel
+  std::vector<float> values;                 ///< values[(k dims[1] + j) dims[0] + i] at origin + spacing (i, j, k)
 
   std::size_t points() const { return static_cast<std::size_t>(dims[0] * dims[1] * dims[2]); }
   std::size_t index(std::int64_t i, std::int64_t j, std::int64_t k) const {
     return static_cast<std::size_t>((k * dims[1] + j) * dims[0] + i);
   }
-  Vec3 position(std::int64_t i, std::int64_t j, std::int64_t k) const {
-    return origin + spacing * Vec3(double(i), double(j), double(k));
-  }
-  /// Trilinear interpolation of a channel at x; 0 outside the grid.
-  double sample(std::size_t channel, const Vec3& x) const {
+  /// Trilinear interpolation at x; 0 outside the grid.
+  double sample(const Vec3& x) const {
     const Vec3 local = (x - origin) / spacing;
     std::int64_t at[3];
     double frac[3];
@@ -46,7 +40,7 @@ struct ScalarGrid {
         ijk[a] = at[a] + upper;
         weight *= upper ? frac[a] : 1.0 - frac[a];
       }
-      sum += weight * channels[channel][index(ijk[0], ijk[1], ijk[2])];
+      sum += weight * values[index(ijk[0], ijk[1], ijk[2])];
     }
     return sum;
   }

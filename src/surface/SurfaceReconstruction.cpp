@@ -5,6 +5,7 @@
 #include "sph/ParticleSystem.hpp"
 #include "surface/IsoSurface.hpp"
 #include "surface/PorousVolumes.hpp"
+#include "surface/ShepardInterpolation.hpp"
 
 namespace poro {
 
@@ -13,13 +14,11 @@ Reconstruction reconstruct(const ParticleCloud& cloud, const ReconstructionSetti
   result.iso = settings.isoValue;
   result.grid = colourField(cloud, settings.kernelRadius * particleRadius, settings.gridSpacing * particleRadius,
                             settings.where);
-  std::vector<GridField> fields;
-  std::size_t channel = 1;
-  for (const ParticleField& f : cloud.fields) {
-    fields.push_back({f.name, channel, f.components});
-    channel += static_cast<std::size_t>(f.components);
-  }
-  result.surface = contour(result.grid, settings.isoValue, fields, settings.smoothingIterations);
+  result.surface = contour(result.grid, settings.isoValue, settings.smoothingIterations);
+  if (result.surface.empty()) return result;
+  const ShepardInterpolation interpolation(cloud, settings.kernelRadius * particleRadius);
+  for (const ParticleField& f : cloud.fields)
+    result.surface.fields.push_back({f.name, f.components, interpolation.at(result.surface.points, f)});
   return result;
 }
 

@@ -13,11 +13,11 @@ class ParticleSystem;
 
 struct Reconstruction {
   TriangleSurface surface;
-  ScalarGrid grid; ///< the colour field and spread fields it was contoured from (renderCase cuts it open)
+  ScalarGrid grid; ///< the colour field it was contoured from (renderCase cuts it open)
   double iso = 0.5;
 };
 
-/// The surface of `cloud` with every field of the cloud read off at it (Shepard average over the kernel).
+/// The surface of `cloud` with every field of the cloud read off at its points (ShepardInterpolation).
 Reconstruction reconstruct(const ParticleCloud& cloud, const ReconstructionSettings& settings, double particleRadius);
 
 /// The set named "fluid" with V = (2r)^3 and its velocity `v`. Pore fluid (inside a porous object, as

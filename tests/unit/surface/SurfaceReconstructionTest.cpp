@@ -64,7 +64,7 @@ TEST(SurfaceReconstruction, ASwollenBodyKeepsItsColourFieldAndIsClosed) {
   const ParticleCloud cloud = porousCloud(ps);
   const Reconstruction made = reconstruct(cloud, ReconstructionSettings{}, kR);
   const Vec3 centre = Vec3::Constant(stretch * 8.0 * kR);
-  EXPECT_NEAR(made.grid.sample(0, centre), 1.0, 0.05);
+  EXPECT_NEAR(made.grid.sample(centre), 1.0, 0.05);
   EXPECT_TRUE(made.surface.defects().none());
   // The swollen block of edge 1.2 x 0.16 m, less its rounded edges (IsoSurfaceTest: under 1.2 r^2 per length).
   const double edge = stretch * 16.0 * kR;
