@@ -86,6 +86,9 @@ vtkSmartPointer<vtkActor> actorOf(vtkAlgorithmOutput* input, vtkPolyData* data, 
   actor->SetMapper(mapper);
   actor->GetProperty()->SetColor(style.colour[0], style.colour[1], style.colour[2]);
   actor->GetProperty()->SetOpacity(style.opacity);
+  // Some ambient light: a colour map's light end stays light on faces turned away from the lights.
+  actor->GetProperty()->SetAmbient(0.3);
+  actor->GetProperty()->SetDiffuse(0.75);
   return actor;
 }
 
