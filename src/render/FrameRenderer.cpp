@@ -3,7 +3,7 @@
 #include "core/Error.hpp"
 #include "render/ColourMap.hpp"
 #include "surface/ShepardInterpolation.hpp"
-#include "surface/SurfacePolyData.hpp"
+#include "surface/VtkConversion.hpp"
 
 #include <vtkActor.h>
 #include <vtkActor2D.h>
@@ -101,6 +101,12 @@ struct FrameRenderer::Impl {
   vtkNew<vtkRenderWindow> window;
   vtkNew<vtkRenderer> renderer;
 
+  vtkSmartPointer<vtkPlane> clipPlane() const {
+    auto plane = vtkSmartPointer<vtkPlane>::New();
+    plane->SetOrigin(settings.clip->origin.data());
+    plane->SetNormal(settings.clip->normal.data());
+    return plane;
+  }
   void addSurface(const SceneLayer& layer, vtkLookupTable* table, bool coloured);
   void addCap(const SceneLayer& layer, vtkLookupTable* table, bool coloured);
   void addParticles(const SceneLayer& layer, vtkLookupTable* table, bool coloured);
@@ -139,12 +145,9 @@ void FrameRenderer::Impl::addSurface(const SceneLayer& layer, vtkLookupTable* ta
   if (coloured) setValues(poly, layer.values);
   vtkSmartPointer<vtkActor> actor;
   if (layer.grid && settings.clip) {
-    vtkNew<vtkPlane> plane;
-    plane->SetOrigin(settings.clip->origin.data());
-    plane->SetNormal(settings.clip->normal.data());
     vtkNew<vtkClipPolyData> clip;
     clip->SetInputData(poly);
-    clip->SetClipFunction(plane);
+    clip->SetClipFunction(clipPlane());
     clip->InsideOutOn(); // keep the side the normal points away from
     actor = actorOf(clip->GetOutputPort(), nullptr, *layer.style, table, coloured);
     addCap(layer, table, coloured);
@@ -163,20 +166,10 @@ void FrameRenderer::Impl::addCap(const SceneLayer& layer, vtkLookupTable* table,
   // particles' field read off at the cap's points.
   const ScalarGrid& grid = *layer.grid;
   if (grid.points() == 0) return;
-  vtkNew<vtkImageData> image;
-  image->SetOrigin(grid.origin.x(), grid.origin.y(), grid.origin.z());
-  image->SetSpacing(grid.spacing, grid.spacing, grid.spacing);
-  image->SetDimensions(static_cast<int>(grid.dims[0]), static_cast<int>(grid.dims[1]), static_cast<int>(grid.dims[2]));
-  vtkNew<vtkFloatArray> c;
-  c->SetName("c");
-  c->SetArray(const_cast<float*>(grid.values.data()), static_cast<vtkIdType>(grid.points()), 1);
-  image->GetPointData()->SetScalars(c);
-  vtkNew<vtkPlane> plane;
-  plane->SetOrigin(settings.clip->origin.data());
-  plane->SetNormal(settings.clip->normal.data());
+  const vtkSmartPointer<vtkImageData> image = toImageData(grid);
   vtkNew<vtkCutter> cutter;
   cutter->SetInputData(image);
-  cutter->SetCutFunction(plane);
+  cutter->SetCutFunction(clipPlane());
   vtkNew<vtkClipPolyData> inside; // keeps c >= iso
   inside->SetInputConnection(cutter->GetOutputPort());
   inside->SetValue(layer.iso);

@@ -82,6 +82,12 @@ ScalarGrid colourField(const ParticleCloud& cloud, double supportRadius, double 
   const std::int64_t slabs = (nz + kSlabLayers - 1) / kSlabLayers;
   const std::int64_t nx = grid.dims[0], ny = grid.dims[1];
   float* const out = grid.values.data();
+  // The grid indices within `reach` grid units of `centre` (in grid units), clipped to [0, n).
+  const auto span = [](double centre, double reach, std::int64_t n) {
+    return std::pair<std::int64_t, std::int64_t>{
+        std::max<std::int64_t>(0, static_cast<std::int64_t>(std::ceil(centre - reach))),
+        std::min(n - 1, static_cast<std::int64_t>(std::floor(centre + reach)))};
+  };
   parallel::forEachTask(static_cast<std::size_t>(slabs), [&](std::size_t slab) {
     const std::int64_t k0 = static_cast<std::int64_t>(slab) * kSlabLayers, k1 = std::min(nz, k0 + kSlabLayers);
     const std::size_t first = start[static_cast<std::size_t>(std::max<std::int64_t>(0, k0 - reach))];
@@ -96,15 +102,11 @@ ScalarGrid colourField(const ParticleCloud& cloud, double supportRadius, double 
       for (std::int64_t k = kLo; k <= kHi; ++k) {
         const double dz = (double(k) - local.z()) * spacing, restZ = h2 - dz * dz;
         if (restZ <= 0.0) continue;
-        const double ry = std::sqrt(restZ) / spacing;
-        const std::int64_t jLo = std::max<std::int64_t>(0, static_cast<std::int64_t>(std::ceil(local.y() - ry)));
-        const std::int64_t jHi = std::min(ny - 1, static_cast<std::int64_t>(std::floor(local.y() + ry)));
+        const auto [jLo, jHi] = span(local.y(), std::sqrt(restZ) / spacing, ny);
         for (std::int64_t j = jLo; j <= jHi; ++j) {
           const double dy = (double(j) - local.y()) * spacing, restY = restZ - dy * dy;
           if (restY <= 0.0) continue;
-          const double rx = std::sqrt(restY) / spacing;
-          const std::int64_t iLo = std::max<std::int64_t>(0, static_cast<std::int64_t>(std::ceil(local.x() - rx)));
-          const std::int64_t iHi = std::min(nx - 1, static_cast<std::int64_t>(std::floor(local.x() + rx)));
+          const auto [iLo, iHi] = span(local.x(), std::sqrt(restY) / spacing, nx);
           const double dyz = h2 - restY; // dy^2 + dz^2
           float* target = out + grid.index(0, j, k);
           for (std::int64_t i = iLo; i <= iHi; ++i) {

@@ -1,6 +1,7 @@
 #include "surface/IsoSurface.hpp"
 
 #include "core/Parallel.hpp"
+#include "surface/VtkConversion.hpp"
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
@@ -19,15 +20,7 @@ namespace poro {
 TriangleSurface contour(const ScalarGrid& grid, double iso, int smoothingIterations) {
   TriangleSurface surface;
   if (grid.points() == 0) return surface;
-  vtkNew<vtkImageData> image;
-  image->SetOrigin(grid.origin.x(), grid.origin.y(), grid.origin.z());
-  image->SetSpacing(grid.spacing, grid.spacing, grid.spacing);
-  image->SetDimensions(static_cast<int>(grid.dims[0]), static_cast<int>(grid.dims[1]), static_cast<int>(grid.dims[2]));
-  vtkNew<vtkFloatArray> values;
-  values->SetName("c");
-  // Shares the grid's memory (save = 1: VTK never frees or writes it).
-  values->SetArray(const_cast<float*>(grid.values.data()), static_cast<vtkIdType>(grid.points()), 1);
-  image->GetPointData()->SetScalars(values);
+  const vtkSmartPointer<vtkImageData> image = toImageData(grid);
 
   vtkSMPTools::Initialize(parallel::threads());
   vtkNew<vtkFlyingEdges3D> flyingEdges;

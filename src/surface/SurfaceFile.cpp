@@ -2,7 +2,7 @@
 
 #include "core/Error.hpp"
 #include "io/AtomicFile.hpp"
-#include "surface/SurfacePolyData.hpp"
+#include "surface/VtkConversion.hpp"
 
 #include <vtkErrorCode.h>
 #include <vtkNew.h>

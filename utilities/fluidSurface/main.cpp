@@ -67,8 +67,7 @@ int main(int argc, char* argv[]) try {
       "Post-processing: reconstructs the free surface of the fluid and the surfaces of the porous bodies at each\n"
       "selected time into <t>/fluidSurface.vtp (with the velocity) and <t>/porousSurface.vtp (with the\n"
       "saturation), and lists them in case.pvd as the blocks fluidSurface and porousSurface.",
-      {{"time", "RANGES", "times to process: 0.5 | 0.5:2 | :1 | 2: (inclusive) | a comma-separated list (default: all)"},
-       {"latestTime", "", "process the latest time directory (with -time: in addition)"}});
+      timeOptions("process"));
   if (args.help()) {
     std::cout << args.usage() << kDetails;
     return 0;
@@ -79,10 +78,7 @@ int main(int argc, char* argv[]) try {
 
   const AnalysisSettings analysis = readAnalysisSettings(caseDir);
   const SurfaceSettings settings = readSurfaceSettings(caseDir);
-  std::optional<TimeSelector> selector;
-  if (args.has("time")) selector = TimeSelector::parse(args.value("time"));
-  const TimeSelection selection = selectTimes(scanTimeDirectories(caseDir), selector, args.has("latestTime"), caseDir);
-  for (const std::string& warning : selection.warnings) log::warning(warning);
+  const TimeSelection selection = selectTimes(args, caseDir);
   log::info("Case: " + caseDir.string() + "\nTimes: " + std::to_string(selection.complete.size()) +
             "\nThreads: " + std::to_string(parallel::threads()));
 
@@ -114,9 +110,7 @@ int main(int argc, char* argv[]) try {
       log::warning((caseDir / time.name).string() + ": cannot be read; skipped:\n    " + e.what());
     }
   }
-  if (done == 0)
-    throw InputError(caseDir.string() + ": none of the " + std::to_string(selection.complete.size()) +
-                     " selected time directories could be read (see the warnings above)");
+  if (done == 0) throw noneReadable(caseDir, selection.complete.size());
   log::info("Wrote the surfaces of " + std::to_string(done) + " of " + std::to_string(selection.complete.size()) +
             " time directories and " + pvd.string() + "\nEnd");
   return 0;

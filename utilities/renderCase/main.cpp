@@ -80,10 +80,12 @@ int main(int argc, char* argv[]) try {
       argc, argv, "renderCase",
       "Post-processing: draws each selected time of a case (fluid surface, porous bodies coloured by saturation,\n"
       "walls) off screen into postProcessing/renderCase/<time>.png, as system/renderDict says.",
-      {{"time", "RANGES", "times to draw: 0.5 | 0.5:2 | :1 | 2: (inclusive) | a comma-separated list (default: all)"},
-       {"latestTime", "", "draw the latest time directory (with -time: in addition)"},
-       {"size", "WxH", "image size in pixels, e.g. 640x360 (default: renderDict imageSize, else 1280x720)"},
-       {"movie", "", "also write postProcessing/renderCase/movie.mp4 (needs ffmpeg)"}});
+      [] {
+        auto options = timeOptions("draw");
+        options.push_back({"size", "WxH", "image size in pixels, e.g. 640x360 (default: renderDict imageSize, else 1280x720)"});
+        options.push_back({"movie", "", "also write postProcessing/renderCase/movie.mp4 (needs ffmpeg)"});
+        return options;
+      }());
   if (args.help()) {
     std::cout << args.usage() << kDetails;
     return 0;
@@ -99,10 +101,7 @@ int main(int argc, char* argv[]) try {
 
   const AnalysisSettings analysis = readAnalysisSettings(caseDir);
   const SurfaceSettings surface = readSurfaceSettings(caseDir);
-  std::optional<TimeSelector> selector;
-  if (args.has("time")) selector = TimeSelector::parse(args.value("time"));
-  const TimeSelection selection = selectTimes(scanTimeDirectories(caseDir), selector, args.has("latestTime"), caseDir);
-  for (const std::string& warning : selection.warnings) log::warning(warning);
+  const TimeSelection selection = selectTimes(args, caseDir);
   const auto read = [&](const TimeCandidate& time) {
     return readParticles(caseDir, time.name, analysis.particleRadius, analysis.materials);
   };
@@ -169,9 +168,7 @@ int main(int argc, char* argv[]) try {
       log::warning((caseDir / time.name).string() + ": cannot be read; skipped:\n    " + e.what());
     }
   }
-  if (frames.empty())
-    throw InputError(caseDir.string() + ": none of the " + std::to_string(selection.complete.size()) +
-                     " selected time directories could be read (see the warnings above)");
+  if (frames.empty()) throw noneReadable(caseDir, selection.complete.size());
   if (!ffmpeg.empty()) {
     encodeMovie(ffmpeg, frames, settings.frameRate, output / "movie.mp4");
     log::info("Movie: " + (output / "movie.mp4").string());

@@ -1,4 +1,4 @@
-#include "surface/SurfacePolyData.hpp"
+#include "surface/VtkConversion.hpp"
 
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
@@ -41,6 +41,18 @@ vtkSmartPointer<vtkPolyData> toPolyData(const TriangleSurface& surface) {
     scalarsSet = scalarsSet || f.components == 1;
   }
   return poly;
+}
+
+vtkSmartPointer<vtkImageData> toImageData(const ScalarGrid& grid) {
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetOrigin(grid.origin.x(), grid.origin.y(), grid.origin.z());
+  image->SetSpacing(grid.spacing, grid.spacing, grid.spacing);
+  image->SetDimensions(static_cast<int>(grid.dims[0]), static_cast<int>(grid.dims[1]), static_cast<int>(grid.dims[2]));
+  vtkNew<vtkFloatArray> values;
+  values->SetName("c");
+  values->SetArray(const_cast<float*>(grid.values.data()), static_cast<vtkIdType>(grid.points()), 1);
+  image->GetPointData()->SetScalars(values);
+  return image;
 }
 
 } // namespace poro
