@@ -59,11 +59,11 @@ bool hasKind(const ParticleSystem& particles, SetKind kind) {
   return false;
 }
 
-/// Bounds of the fluid and porous particles (of the boundary when there are none).
-void extend(const ParticleSystem& particles, Vec3& lo, Vec3& hi, bool& any) {
-  const bool content = hasKind(particles, SetKind::Fluid) || hasKind(particles, SetKind::Porous);
+/// Extends [lo, hi] by the finite particles of the sets `include` accepts.
+template <class Include>
+void extend(const ParticleSystem& particles, const Include& include, Vec3& lo, Vec3& hi, bool& any) {
   for (std::size_t s = 0; s < particles.size(); ++s) {
-    if (content == (particles[s].kind() == SetKind::Boundary)) continue;
+    if (!include(particles[s])) continue;
     for (const Vec3& p : particles[s].x()) {
       if (!p.allFinite()) continue;
       lo = any ? Vec3(lo.cwiseMin(p)) : p;
@@ -71,6 +71,16 @@ void extend(const ParticleSystem& particles, Vec3& lo, Vec3& hi, bool& any) {
       any = true;
     }
   }
+}
+
+/// What the default camera frames: the fluid and porous particles of the given times, or all particles (walls
+/// included) when those are empty (a solid case).
+void framedBox(const std::vector<const ParticleSystem*>& times, Vec3& lo, Vec3& hi) {
+  bool any = false;
+  for (const ParticleSystem* particles : times)
+    extend(*particles, [](const ParticleSet& set) { return set.kind() != SetKind::Boundary; }, lo, hi, any);
+  if (any) return;
+  for (const ParticleSystem* particles : times) extend(*particles, [](const ParticleSet&) { return true; }, lo, hi, any);
 }
 
 } // namespace
@@ -109,9 +119,12 @@ int main(int argc, char* argv[]) try {
   // First and last frame: whether there are porous bodies, and what the default camera frames.
   const ParticleSystem first = read(selection.complete.front());
   Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
-  bool any = false;
-  extend(first, lo, hi, any);
-  if (selection.complete.size() > 1) extend(read(selection.complete.back()), lo, hi, any);
+  if (selection.complete.size() > 1) {
+    const ParticleSystem last = read(selection.complete.back());
+    framedBox({&first, &last}, lo, hi);
+  } else {
+    framedBox({&first}, lo, hi);
+  }
   RenderSettings settings = readRenderSettings(caseDir, hasKind(first, SetKind::Porous));
   applySize(args, settings);
   CameraView camera = CameraView::framing(lo, hi, analysis.gravity, settings.camera.viewAngle,
