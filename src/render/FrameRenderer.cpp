@@ -2,7 +2,6 @@
 
 #include "core/Error.hpp"
 #include "render/ColourMap.hpp"
-#include "surface/ShepardInterpolation.hpp"
 #include "surface/VtkConversion.hpp"
 
 #include <vtkActor.h>
@@ -10,10 +9,8 @@
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkClipPolyData.h>
-#include <vtkCutter.h>
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
-#include <vtkImageData.h>
 #include <vtkLightKit.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
@@ -33,6 +30,7 @@
 #include <vtkTextProperty.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -144,7 +142,8 @@ void FrameRenderer::Impl::addSurface(const SceneLayer& layer, vtkLookupTable* ta
   vtkSmartPointer<vtkPolyData> poly = toPolyData(layer.surface);
   if (coloured) setValues(poly, layer.values);
   vtkSmartPointer<vtkActor> actor;
-  if (layer.grid && settings.clip) {
+  if (settings.clip && std::find(settings.clip->sets.begin(), settings.clip->sets.end(), layer.style->set) !=
+                           settings.clip->sets.end()) {
     vtkNew<vtkClipPolyData> clip;
     clip->SetInputData(poly);
     clip->SetClipFunction(clipPlane());
@@ -162,39 +161,10 @@ void FrameRenderer::Impl::addSurface(const SceneLayer& layer, vtkLookupTable* ta
 }
 
 void FrameRenderer::Impl::addCap(const SceneLayer& layer, vtkLookupTable* table, bool coloured) {
-  // The body's inside on the plane: the colour field's grid cut by the plane, kept where c >= iso, coloured by the
-  // particles' field read off at the cap's points.
-  const ScalarGrid& grid = *layer.grid;
-  if (grid.points() == 0) return;
-  const vtkSmartPointer<vtkImageData> image = toImageData(grid);
-  vtkNew<vtkCutter> cutter;
-  cutter->SetInputData(image);
-  cutter->SetCutFunction(clipPlane());
-  vtkNew<vtkClipPolyData> inside; // keeps c >= iso
-  inside->SetInputConnection(cutter->GetOutputPort());
-  inside->SetValue(layer.iso);
-  inside->Update();
-  vtkNew<vtkPolyData> cap;
-  cap->ShallowCopy(inside->GetOutput());
-  if (cap->GetNumberOfPoints() == 0) return;
-  if (coloured && layer.cloud) {
-    std::vector<Vec3> points(static_cast<std::size_t>(cap->GetNumberOfPoints()));
-    for (vtkIdType p = 0; p < cap->GetNumberOfPoints(); ++p) cap->GetPoint(p, points[static_cast<std::size_t>(p)].data());
-    std::vector<double> values(points.size(), 0.0);
-    const ShepardInterpolation interpolation(*layer.cloud, layer.supportRadius);
-    for (const ParticleField& f : layer.cloud->fields) {
-      if (f.name != layer.style->colourBy) continue;
-      const std::vector<double> at = interpolation.at(points, f);
-      const auto k = static_cast<std::size_t>(f.components);
-      for (std::size_t p = 0; p < points.size(); ++p) {
-        double sum = 0.0;
-        for (std::size_t i = 0; i < k; ++i) sum += at[p * k + i] * at[p * k + i];
-        values[p] = std::sqrt(sum);
-      }
-    }
-    setValues(cap, values);
-  }
-  renderer->AddActor(actorOf(nullptr, cap, *layer.style, table, coloured));
+  if (layer.cap.empty()) return;
+  vtkSmartPointer<vtkPolyData> cap = toPolyData(layer.cap);
+  if (coloured) setValues(cap, layer.capValues);
+  renderer->AddActor(actorOf(nullptr, cap, *layer.style, table, coloured && !layer.capValues.empty()));
 }
 
 void FrameRenderer::Impl::addParticles(const SceneLayer& layer, vtkLookupTable* table, bool coloured) {

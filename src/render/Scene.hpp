@@ -2,11 +2,9 @@
 /// What one picture shows, without VTK: SceneBuilder makes it from a time directory, FrameRenderer draws it.
 
 #include "render/RenderSettings.hpp"
-#include "surface/ColourField.hpp"
 #include "surface/TriangleSurface.hpp"
 
 #include <array>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,12 +19,9 @@ struct SceneLayer {
   double particleRadius = 0.0;
   std::vector<double> values;
   std::vector<std::array<Vec3, 2>> containers; ///< inner boxes (min, max) of container walls
-  /// For the cap where a clip plane cuts the body open: the colour field the surface was contoured from (the cap
-  /// is where c >= iso on the plane) and the particles, whose field colourBy colours the cap (|f| for vectors).
-  std::optional<ScalarGrid> grid;
-  double iso = 0.5;
-  std::optional<ParticleCloud> cloud;
-  double supportRadius = 0.0;
+  /// Where the clip plane cuts the body open (ClipCap), coloured by `capValues` like the surface.
+  TriangleSurface cap;
+  std::vector<double> capValues;
 };
 
 struct Scene {

@@ -3,7 +3,9 @@
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
 #include "physics/FieldNames.hpp"
+#include "render/ClipCap.hpp"
 #include "sph/ParticleSystem.hpp"
+#include "surface/ShepardInterpolation.hpp"
 #include "surface/SurfaceReconstruction.hpp"
 
 #include <algorithm>
@@ -34,19 +36,22 @@ double magnitude(const ParticleSet& set, const std::string& name, std::size_t i)
   return 0.0;
 }
 
+/// |f| per point of values[point components + c].
+std::vector<double> magnitudes(const std::vector<double>& values, int components) {
+  const auto k = static_cast<std::size_t>(components);
+  std::vector<double> out(values.size() / k);
+  for (std::size_t p = 0; p < out.size(); ++p) {
+    double sum = 0.0;
+    for (std::size_t c = 0; c < k; ++c) sum += values[p * k + c] * values[p * k + c];
+    out[p] = std::sqrt(sum);
+  }
+  return out;
+}
+
 /// |f| at the surface's points for the field `name` (empty if the surface has none).
 std::vector<double> surfaceValues(const TriangleSurface& surface, const std::string& name) {
-  std::vector<double> values;
   const TriangleSurface::Field* f = surface.field(name);
-  if (!f) return values;
-  const auto k = static_cast<std::size_t>(f->components);
-  values.resize(surface.points.size());
-  for (std::size_t p = 0; p < values.size(); ++p) {
-    double sum = 0.0;
-    for (std::size_t c = 0; c < k; ++c) sum += f->values[p * k + c] * f->values[p * k + c];
-    values[p] = std::sqrt(sum);
-  }
-  return values;
+  return f ? magnitudes(f->values, f->components) : std::vector<double>();
 }
 
 bool clips(const RenderSettings& render, const std::string& set) {
@@ -126,7 +131,7 @@ Scene SceneBuilder::build(const ParticleSystem& particles, const std::string& ti
       continue;
     }
     const bool fluid = style->set == "fluid";
-    ParticleCloud cloud = fluid ? fluidCloud(particles, surface_) : porousCloud(particles);
+    const ParticleCloud cloud = fluid ? fluidCloud(particles, surface_) : porousCloud(particles);
     if (cloud.positions.empty()) continue;
     const ReconstructionSettings& settings = fluid ? surface_.fluid : surface_.porous;
     Reconstruction made = reconstruct(cloud, settings, r);
@@ -135,10 +140,10 @@ Scene SceneBuilder::build(const ParticleSystem& particles, const std::string& ti
     if (fluid) trimContact(layer.surface);
     else contact_.push_back(made.grid);
     if (clips(render_, style->set)) {
-      layer.grid = std::move(made.grid);
-      layer.iso = made.iso;
-      layer.supportRadius = settings.kernelRadius * r;
-      layer.cloud = std::move(cloud);
+      layer.cap = clipCap(made.grid, made.iso, *render_.clip);
+      const ShepardInterpolation interpolation(cloud, settings.kernelRadius * r);
+      for (const ParticleField& f : cloud.fields)
+        if (f.name == style->colourBy) layer.capValues = magnitudes(interpolation.at(layer.cap.points, f), f.components);
     }
     scene.layers.push_back(std::move(layer));
   }

@@ -32,8 +32,8 @@ What is drawn (system/renderDict, every key optional; see etc/caseDicts/renderDi
   porous    the surfaces of the porous bodies coloured by saturation with the "wetness" map: dry is pale,
             wet is dark blue, with a legend; or its particles; a clip plane cuts them open to show the front
   boundary  container walls as the outline of their box with its floor, other walls (a moving plate) as surfaces
-The camera looks at the fluid and porous bodies from the front, a little from the side and above, with gravity
-pointing down; colour ranges are fixed for all frames (saturation 0-1, other fields over the selected times).
+The camera looks at the fluid and porous bodies (at the case's first and last time) from the front, a little from
+the side and above, with gravity pointing down; colour ranges are fixed for all frames (saturation 0-1, other fields over the selected times).
 Frames are written to postProcessing/renderCase/<time>.png; -movie also encodes movie.mp4 with ffmpeg (not
 installed by ./Allrun: apt-get install ffmpeg). VTK draws through an X display even off screen: without DISPLAY,
 renderCase runs itself under xvfb-run -a (./Allrun installs xvfb). A time directory that cannot be read is named
@@ -112,19 +112,25 @@ int main(int argc, char* argv[]) try {
   const AnalysisSettings analysis = readAnalysisSettings(caseDir);
   const SurfaceSettings surface = readSurfaceSettings(caseDir);
   const TimeSelection selection = selectTimes(args, caseDir);
-  const auto read = [&](const TimeCandidate& time) {
-    return readParticles(caseDir, time.name, analysis.particleRadius, analysis.materials);
-  };
 
-  // First and last frame: whether there are porous bodies, and what the default camera frames.
-  const ParticleSystem first = read(selection.complete.front());
+  // The case's first and last time (not the selection's, so that every run of renderCase on a case takes the same
+  // view): whether there are porous bodies, and what the default camera frames.
+  const std::vector<TimeDirectoryEntry> all = listTimeDirectories(caseDir);
+  const auto readName = [&](const std::string& name) {
+    return readParticles(caseDir, name, analysis.particleRadius, analysis.materials);
+  };
+  // A broken first or last directory (warned about above if selected) gives way to the selection's.
+  const auto readEither = [&](const std::string& name, const TimeCandidate& fallback) {
+    try {
+      return readName(name);
+    } catch (const InputError&) {
+      return readName(fallback.name);
+    }
+  };
+  const ParticleSystem first = readEither(all.front().name, selection.complete.front());
+  const ParticleSystem last = readEither(all.back().name, selection.complete.back());
   Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
-  if (selection.complete.size() > 1) {
-    const ParticleSystem last = read(selection.complete.back());
-    framedBox({&first, &last}, lo, hi);
-  } else {
-    framedBox({&first}, lo, hi);
-  }
+  framedBox({&first, &last}, lo, hi);
   RenderSettings settings = readRenderSettings(caseDir, hasKind(first, SetKind::Porous));
   applySize(args, settings);
   CameraView camera = CameraView::framing(lo, hi, analysis.gravity, settings.camera.viewAngle,
@@ -144,7 +150,7 @@ int main(int argc, char* argv[]) try {
     double low = HUGE_VAL, high = -HUGE_VAL;
     for (const TimeCandidate& time : selection.complete) {
       try {
-        for (double v : SceneBuilder::particleValues(read(time), *style)) low = std::min(low, v), high = std::max(high, v);
+        for (double v : SceneBuilder::particleValues(readName(time.name), *style)) low = std::min(low, v), high = std::max(high, v);
       } catch (const InputError& e) {
         if (std::string(e.what()).find("colourBy") != std::string::npos) throw;
       }
@@ -169,7 +175,7 @@ int main(int argc, char* argv[]) try {
   for (const TimeCandidate& time : selection.complete) {
     try {
       const Timer timer;
-      const Scene scene = builder.build(read(time), time.name, time.time);
+      const Scene scene = builder.build(readName(time.name), time.name, time.time);
       const fs::path png = output / (time.name + ".png");
       renderer.render(scene, png);
       frames.push_back(png);
