@@ -3,6 +3,7 @@
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
 #include "io/ControlDictWatcher.hpp"
+#include "io/SamplingRecord.hpp"
 #include "io/TimeDirectory.hpp"
 
 #include <cmath>
@@ -96,6 +97,7 @@ SimulationCase readCase(const fs::path& caseDir, int threads) {
                                                        : "; the case has " + names + " (or use startFrom: latestTime)"));
   }
   RunState start = readRunState(caseDir / startName);
+  checkSampledRegions(caseDir, caseDir / startName); // before reading what may be gigabytes of particles
   ParticleSystem particles = readParticles(caseDir, startName, radius, materials);
   if (start.time >= control.endTime)
     controlDictError("endTime", "expected endTime > the start time " + startName + ", got " + timeName(control.endTime));
