@@ -3,7 +3,7 @@
 /// written (issue 19, "no silent wrong run"). Each region's particles carry its index in `regions` as objectId.
 ///
 /// Overlaps. Two regions must not sample the same space: where they do, the density is twice the rest density and
-/// the first pressure solve blows the particles apart (a fluid box through a wall ran at 55,940 m/s). Refused are
+/// the first pressure solve blows the particles apart (issue 19: such cases ran at up to 55,940 m/s). Refused are
 /// particles of two regions closer than kOverlapFraction * 2r for the pairs fluid-fluid, fluid-wall, porous-wall and
 /// porous-porous (bodies do not interpenetrate, METHOD.md §3.2). Fluid inside a porous region stays allowed (a
 /// pre-saturated body), and walls may overlap walls (a wall particle's volume comes from its wall neighbours).
@@ -24,8 +24,9 @@ namespace poro {
 /// lattices of spacing 2r that share any space, however offset against each other, have a pair of points no
 /// farther apart than sqrt(3) r, half the diagonal of a lattice cell, so sqrt(3)/2 of 2r catches every overlap;
 /// regions that merely touch on one lattice are 2r apart, and a wall's first layer lies r behind its face, so a
-/// region sampled up to a container's or wall box's face is 2r from the wall. Bodies on lattices of their own
-/// (spheres, surfaces) may touch closer than 2r; down to about 1.73 r they still pass.
+/// region sampled up to a container's or wall box's face is 2r from the wall (no shipped tutorial has a closer pair).
+/// Bodies on lattices of their own (spheres, surfaces) may touch closer than 2r; down to sqrt(3) r they still pass.
+/// The 1e-9 counts lattices offset by exactly (r, r, r) as overlapping despite round-off.
 inline constexpr double kOverlapFraction = 0.8660254037844386 * (1.0 + 1e-9);
 
 /// Throws an InputError for the first region that lies outside every wall, or else for the first pair of regions
