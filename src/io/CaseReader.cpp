@@ -3,6 +3,7 @@
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
 #include "io/ControlDictWatcher.hpp"
+#include "io/SamplingRecord.hpp"
 #include "io/TimeDirectory.hpp"
 
 #include <cmath>
@@ -97,6 +98,7 @@ SimulationCase readCase(const fs::path& caseDir, int threads) {
                                                        : "; the case has " + names + " (or use startFrom: latestTime)"));
   }
   RunState start = readRunState(caseDir / startName);
+  checkSampledRegions(caseDir, caseDir / startName); // before reading what may be gigabytes of particles
   ParticleSystem particles = readParticles(caseDir, startName, radius, materials);
   // As OpenFOAM: a finished case run again (startFrom latestTime) reports that it is done; the caller exits 0.
   const bool endTimeReached = control.endTimeReached(start.time);

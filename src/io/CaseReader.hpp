@@ -1,7 +1,8 @@
 #pragma once
 /// Reads and validates a whole case before anything runs (ARCHITECTURE.md "Input is checked at the
 /// door"): system/controlDict, system/solverDict, constant/fluidProperties, constant/porosityProperties, the
-/// particle radius of system/particleDict, and the particles of the start time directory.
+/// particle radius of system/particleDict, and the particles of the start time directory, which must have been sampled
+/// from the regions system/particleDict has now (io/SamplingRecord.hpp).
 
 #include "io/OutputSettings.hpp"
 #include "physics/FluidProperties.hpp"

@@ -6,12 +6,14 @@
 #include "io/AtomicFile.hpp"
 #include "io/ParticleVtk.hpp"
 #include "io/PorousSets.hpp"
+#include "io/SamplingRecord.hpp"
 
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -93,6 +95,11 @@ void writeRunState(const fs::path& dir, const RunState& state, double particleRa
   if (particleRadius > 0.0)
     out << "particleRadius: " << formatExact(particleRadius) << "  # [m], must equal system/particleDict's\n";
   writeFileAtomically(dir / "uniform" / "time", out.str());
+}
+
+/// uniform/sampling (io/SamplingRecord.hpp), unless there is no record to write.
+void writeSamplingRecord(const fs::path& dir, const std::string& record) {
+  if (!record.empty()) writeFileAtomically(dir / "uniform" / kSamplingRecordName, record);
 }
 
 const char* fileOfPhase(const std::string& phase) {
@@ -277,6 +284,7 @@ ParticleSystem readParticles(const fs::path& caseDir, const std::string& name, d
   const std::optional<Dictionary> particleDict = readParticleDict(caseDir);
   checkRadius(dir, particleDict, particleRadius);
   checkPhasesPresent(caseDir, dir, particleDict);
+  checkSampledMaterials(caseDir, dir, materials);
   ParticleSystem particles(particleRadius);
   for (const fs::path& file : files) {
     if (kindOfFile(file) == SetKind::Porous) {
@@ -309,6 +317,10 @@ TimeWriter::TimeWriter(fs::path caseDir, const OutputSettings& settings, const s
   }
   series_.removeTimesAfter(start);
   recoverInterruptedWrites(caseDir_);
+  // The record of what the particles were sampled from goes with them into every time directory (a restart from
+  // any of them is checked, io/SamplingRecord.hpp); copied as it is.
+  if (std::ifstream record{caseDir_ / startName / "uniform" / kSamplingRecordName})
+    samplingRecord_.assign(std::istreambuf_iterator<char>(record), std::istreambuf_iterator<char>());
   for (const auto& entry : fs::directory_iterator(caseDir_ / startName))
     if (isParticleFile(entry.path()))
       series_.add(start, entry.path().stem().string(), startName + "/" + entry.path().filename().string());
@@ -322,6 +334,7 @@ void TimeWriter::write(const ParticleSystem& particles, const RunState& state) {
   writeDirectoryAtomically(caseDir_, name, [&](const fs::path& dir) {
     parts = writeSets(dir, particles, movingWalls_, settings_.binary);
     writeRunState(dir, state, particles.particleRadius());
+    writeSamplingRecord(dir, samplingRecord_);
   });
   for (const std::string& part : parts) series_.add(state.time, part, name + "/" + part + ".vtp");
   if (settings_.purgeWrite > 0) purge();
@@ -366,13 +379,14 @@ void TimeWriter::purge() {
   }
 }
 
-void TimeWriter::writeAll(const fs::path& caseDir, const ParticleSystem& particles, const RunState& state,
-                          bool binary) {
+void TimeWriter::writeAll(const fs::path& caseDir, const ParticleSystem& particles, const RunState& state, bool binary,
+                          const std::string& samplingRecord) {
   const std::string name = timeName(state.time);
   std::vector<std::string> parts;
   writeDirectoryAtomically(caseDir, name, [&](const fs::path& dir) {
     parts = writeSets(dir, particles, true, binary);
     writeRunState(dir, state, particles.particleRadius());
+    writeSamplingRecord(dir, samplingRecord);
   });
   PvdSeries series;
   for (const std::string& part : parts) series.add(state.time, part, name + "/" + part + ".vtp");
