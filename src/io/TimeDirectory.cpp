@@ -254,6 +254,7 @@ ParticleSystem readParticles(const fs::path& caseDir, const std::string& name, d
   checkPhasesPresent(caseDir, dir, particleDict);
   ParticleSystem particles(particleRadius);
   for (const fs::path& file : files) {
+    const std::size_t first = particles.size();
     if (kindOfFile(file) == SetKind::Porous) {
       ParticleSet merged(kPorousSetName, SetKind::Porous);
       const auto arrays = readParticleSet(merged, file);
@@ -264,6 +265,7 @@ ParticleSystem readParticles(const fs::path& caseDir, const std::string& name, d
       ParticleSet& set = particles.add(file.stem().string(), kindOfFile(file));
       checkIds(file, readParticleSet(set, file), set.integer(field::id));
     }
+    for (std::size_t s = first; s < particles.size(); ++s) particles[s].source = file.string();
   }
   if (!particles.find("fluid"))
     throw InputError(dir.string() + ": no fluid.vtp; run sampleParticles first (it writes 0/)");
