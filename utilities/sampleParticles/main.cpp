@@ -1,6 +1,7 @@
 /// sampleParticles: system/particleDict -> 0/ (fluid.vtp, porous.vtp, boundary.vtp, uniform/time) and case.pvd.
 
 #include "ParticleRegions.hpp"
+#include "WallGaps.hpp"
 #include "core/Arguments.hpp"
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
@@ -106,6 +107,7 @@ int main(int argc, char* argv[]) try {
     log::info(line.str());
   }
 
+  reportWallGaps(particles, dict);
   fs::create_directories(caseDir);
   TimeWriter::writeAll(caseDir, particles, RunState{}, binary);
   std::ostringstream done;
