@@ -146,6 +146,17 @@ void checkPhasesPresent(const fs::path& caseDir, const fs::path& dir, const std:
     if (phase != "fluid" && phase != "porous" && phase != "boundary") continue;
     const std::string file = fileOfPhase(phase);
     if (fs::exists(dir / file) || (phase == "boundary" && fs::exists(caseDir / "0" / file))) continue;
+    if (phase == "boundary" && dir.filename() != "0") { // a restart: walls that stand still live in 0/ only
+      const fs::path zero = caseDir / "0";
+      throw InputError(
+          (fs::is_directory(zero) ? (zero / file).string() + ": no such file" : zero.string() + ": no such directory") +
+          ", but " + region.where("phase") + " samples boundary region '" + name +
+          "'. Walls that do not move are written once, to 0/boundary.vtp, not to later time directories such as " +
+          dir.filename().string() +
+          "/, so without it the run would have no walls. Restore 0/, or run sampleParticles again with the same "
+          "system/particleDict (it rewrites 0/ and case.pvd) and start again from " +
+          dir.filename().string());
+    }
     throw InputError((dir / file).string() + ": no such file, but " + region.where("phase") + " samples " + phase +
                      " region '" + name + "'" +
                      (dir.filename() == "0" ? "; run sampleParticles again (it writes 0/)"

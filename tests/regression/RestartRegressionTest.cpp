@@ -224,6 +224,24 @@ void runThreeSteps(CaseRunner& runner) {
   runner.setKey("system/controlDict", "endTime", "0.005");
 }
 
+TEST(Restart, WithoutZeroTheMissingStaticWallsAreNamed) {
+  // The tank stands still, so its walls live in 0/boundary.vtp only; with 0/ deleted the restart from 0.003
+  // used to blame 0.003/boundary.vtp ("the time directory is incomplete").
+  CaseRunner runner(kBaseCase);
+  ASSERT_NO_FATAL_FAILURE(runThreeSteps(runner));
+  std::filesystem::remove_all(runner.dir() / "0");
+  EXPECT_EQ(runner.solve("-threads 1"), 1);
+  const std::string log = runner.read("log.poroSph");
+  const std::string dir = runner.dir().string();
+  EXPECT_NE(log.find("--> PoroSPH FATAL input error:\n" + dir + "/0: no such directory, but " + dir +
+                     "/system/particleDict:18 samples boundary region 'tank'. Walls that do not move are written "
+                     "once, to 0/boundary.vtp, not to later time directories such as 0.003/, so without it the run "
+                     "would have no walls. Restore 0/, or run sampleParticles again"),
+            std::string::npos)
+      << log;
+  EXPECT_EQ(listTimeDirectories(runner.dir()).back().name, "0.003");
+}
+
 /// Replaces the first x coordinate of an ascii particle file's Points.
 void moveFirstParticle(CaseRunner& runner, const std::string& file, const std::string& x) {
   std::string text = runner.read(file);
