@@ -57,8 +57,7 @@ public:
   using Observer = std::function<void(const Solver&)>;
   /// Advances to endTime, logging progress per step and calling `write` at every write time. A run from step 0
   /// first logs the densest particles and throws InputError above health.startDensity (physics/StartDensity.hpp).
-  /// SIGINT or
-  /// SIGTERM (core/StopSignals.hpp) and stopAt end the run after the current step. After each step the
+  /// SIGINT or SIGTERM (core/StopSignals.hpp) and stopAt end the run after the current step. After each step the
   /// health checks of solverDict run; a failed check with policy stop writes the last good state and throws
   /// NumericalError naming the particles, where they are and what to change.
   RunOutcome run(const Writer& write, const Monitor& afterStep = {}, const Observer& stepDone = {});
