@@ -157,6 +157,17 @@ void checkPhasesPresent(const fs::path& caseDir, const fs::path& dir, const std:
     if (phase != "fluid" && phase != "porous" && phase != "boundary") continue;
     const std::string file = fileOfPhase(phase);
     if (fs::exists(dir / file) || (phase == "boundary" && fs::exists(caseDir / "0" / file))) continue;
+    if (phase == "boundary" && dir.filename() != "0") { // a restart: walls that stand still live in 0/ only
+      const fs::path zero = caseDir / "0";
+      throw InputError(
+          (fs::is_directory(zero) ? (zero / file).string() + ": no such file" : zero.string() + ": no such directory") +
+          ", but " + region.where("phase") + " samples boundary region '" + name +
+          "'. Walls that do not move are written once, to 0/boundary.vtp, not to later time directories such as " +
+          dir.filename().string() +
+          "/, so without it the run would have no walls. Restore 0/, or run sampleParticles again with the same "
+          "system/particleDict (it rewrites 0/ and case.pvd) and start again from " +
+          dir.filename().string());
+    }
     throw InputError((dir / file).string() + ": no such file, but " + region.where("phase") + " samples " + phase +
                      " region '" + name + "'" +
                      (dir.filename() == "0" ? "; run sampleParticles again (it writes 0/)"
@@ -287,6 +298,7 @@ ParticleSystem readParticles(const fs::path& caseDir, const std::string& name, d
   checkSampledMaterials(caseDir, dir, materials);
   ParticleSystem particles(particleRadius);
   for (const fs::path& file : files) {
+    const std::size_t first = particles.size();
     if (kindOfFile(file) == SetKind::Porous) {
       ParticleSet merged(kPorousSetName, SetKind::Porous);
       const auto arrays = readParticleSet(merged, file);
@@ -297,6 +309,7 @@ ParticleSystem readParticles(const fs::path& caseDir, const std::string& name, d
       ParticleSet& set = particles.add(file.stem().string(), kindOfFile(file));
       checkIds(file, readParticleSet(set, file), set.integer(field::id));
     }
+    for (std::size_t s = first; s < particles.size(); ++s) particles[s].source = file.string();
   }
   if (!particles.find("fluid"))
     throw InputError(dir.string() + ": no fluid.vtp; run sampleParticles first (it writes 0/)");

@@ -43,7 +43,8 @@ public:
   /// Takes the particles of a case (loaded from 0/ or a restart time directory) and validated settings.
   /// Each porous set is named after its material in `materials` (constant/porosityProperties). Walls whose
   /// object id has an entry in `wallMotions` move as prescribed; the others stay where they are. Throws
-  /// InputError when a motion's object has no wall particle.
+  /// InputError when a motion's object has no wall particle, and when particles of the fluid or porous sets lie
+  /// outside the domain (health.domain, or the walls' box grown) unless health.leavingDomain is warn.
   Solver(ParticleSystem particles, const FluidProperties& fluid, std::vector<PorousMaterial> materials,
          const SolverSettings& settings, const TimeControl& control, const RunState& start,
          std::vector<ObjectMotion> wallMotions = {});
@@ -54,8 +55,9 @@ public:
   using Monitor = std::function<void(Solver&)>;
   /// Called at the very end of each step, after any write (per-step records such as solverPerformance).
   using Observer = std::function<void(const Solver&)>;
-  /// Advances to endTime, logging progress per step and calling `write` at every write time. SIGINT or
-  /// SIGTERM (core/StopSignals.hpp) and stopAt end the run after the current step. After each step the
+  /// Advances to endTime, logging progress per step and calling `write` at every write time. A run from step 0
+  /// first logs the densest particles and throws InputError above health.startDensity (physics/StartDensity.hpp).
+  /// SIGINT or SIGTERM (core/StopSignals.hpp) and stopAt end the run after the current step. After each step the
   /// health checks of solverDict run; a failed check with policy stop writes the last good state and throws
   /// NumericalError naming the particles, where they are and what to change.
   RunOutcome run(const Writer& write, const Monitor& afterStep = {}, const Observer& stepDone = {});
@@ -87,6 +89,10 @@ private:
   /// Without the pore-fluid correction, warns of porous materials whose pores fluid fills 10 % short or more
   /// (the absorbed-volume tolerance of VALIDATION.md): porosity below about 0.45.
   void notePoreFluidFill() const;
+  void checkStartPositions();
+  void checkStartDensity();
+  /// "(lo) - (hi)" of the domain, and where it comes from when not from health.domain.
+  std::string describeDomain() const;
   void checkHealth(const Writer& write);
   void checkIterations(const Writer& write);
   void writeState(const Writer& write);

@@ -148,6 +148,39 @@ TEST(Health, InjectedNaNStopsWithTheLastFiniteStateWrittenAndTheRunResumes) {
   EXPECT_TRUE(a.find("fluid")->v() == b.find("fluid")->v());
 }
 
+TEST(Health, WaterSampledTooCloseToTheWallsIsRefusedBeforeStep1) {
+  // The tank's 1 mm wall offset is 0.05 r at r = 2 cm (0.056 r between particles: the walls split the tank's
+  // 0.402 m into 11 equal steps, off the water's lattice): the water starts at rho/rho^max 1.02, which the first
+  // pressure solve would blow apart (2.2 m/s at deltaT = 1 ms, 314 m/s at 1e-5 s) without a word.
+  CaseRunner runner("fluid/hydrostaticTank");
+  runner.setKey("system/particleDict", "particleRadius", "0.02");
+  runner.setKey("system/controlDict", "endTime", "0.01");
+  ASSERT_EQ(runner.sample(), 0) << runner.read("log.sampleParticles");
+  const std::string sampling = runner.read("log.sampleParticles");
+  EXPECT_NE(sampling.find("region water: smallest gap to the walls 0.056 r (0.00112 m), to region tank"),
+            std::string::npos)
+      << sampling;
+  EXPECT_NE(sampling.find("Warning: " + runner.dir().string() + "/system/particleDict:"), std::string::npos)
+      << sampling;
+  EXPECT_EQ(runner.solve("-threads 1"), 1);
+  const std::string log = runner.read("log.poroSph");
+  EXPECT_NE(log.find("Densest particles at the start (rho / rho^max; health.startDensity 1.005): fluid 1.0"),
+            std::string::npos)
+      << log;
+  EXPECT_NE(log.find("--> PoroSPH FATAL input error:\n" + runner.dir().string() + "/0/fluid.vtp: "), std::string::npos)
+      << log;
+  EXPECT_NE(log.find(" fluid particles start denser than health.startDensity = 1.005 allows"), std::string::npos)
+      << log;
+  EXPECT_NE(log.find("Leave a gap of 0.1 r or more"), std::string::npos) << log;
+  EXPECT_EQ(log.find("Time = "), std::string::npos) << "a step was done:\n" << log;
+  EXPECT_EQ(listTimeDirectories(runner.dir()).back().name, "0");
+
+  // The cure the message gives: 0.1 r.
+  makeCoarseTank(runner, "0.002", "0.001");
+  std::filesystem::remove(runner.dir() / "log.poroSph");
+  EXPECT_EQ(runner.solve("-threads 1"), 0) << runner.read("log.poroSph");
+}
+
 /// Runs the solver with files limited to `bytes` (RLIMIT_FSIZE, SIGXFSZ ignored): writes beyond it fail with
 /// EFBIG as on a full disk, for root too. Returns the exit code.
 int solveWithFileSizeLimit(const CaseRunner& runner, rlim_t bytes) {

@@ -3,6 +3,7 @@
 
 #include "ParticleRegions.hpp"
 #include "RegionPlacement.hpp"
+#include "WallGaps.hpp"
 #include "core/Arguments.hpp"
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
@@ -110,6 +111,7 @@ int main(int argc, char* argv[]) try {
   }
 
   checkRegionPlacement(dict, particles); // before 0/ is written: a refused case keeps its old 0/
+  reportWallGaps(particles, dict);
   fs::create_directories(caseDir);
   // What 0/ was sampled from: poroSph refuses to run it once particleDict's regions or the materials' order change.
   TimeWriter::writeAll(caseDir, particles, RunState{}, binary,
