@@ -344,8 +344,10 @@ TimeWriter::TimeWriter(fs::path caseDir, const OutputSettings& settings, const s
 void TimeWriter::write(const ParticleSystem& particles, const RunState& state) {
   const std::string name = timeName(state.time);
   std::vector<std::string> parts;
+  // Static walls live in the start directory 0/ only, so rewriting 0/ (step 0) writes them too.
+  const bool withBoundaries = movingWalls_ || state.step == 0;
   writeDirectoryAtomically(caseDir_, name, [&](const fs::path& dir) {
-    parts = writeSets(dir, particles, movingWalls_, settings_.binary);
+    parts = writeSets(dir, particles, withBoundaries, settings_.binary);
     writeRunState(dir, state, particles.particleRadius());
     writeSamplingRecord(dir, samplingRecord_);
   });

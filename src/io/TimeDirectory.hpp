@@ -54,7 +54,7 @@ public:
   /// Starts the series at the time directory `startName` (entries after it are dropped from case.pvd).
   TimeWriter(std::filesystem::path caseDir, const OutputSettings& settings, const std::string& startName);
 
-  /// Writes `<t>/` for the dynamic sets (fluid.vtp, porous.vtp), with moving walls also boundary.vtp, and
+  /// Writes `<t>/` for the dynamic sets (fluid.vtp, porous.vtp), with moving walls or at step 0 also boundary.vtp, and
   /// uniform/time (and uniform/sampling when the start time directory has it), atomically, then case.pvd (one part
   /// per file: "fluid", "porous", "boundary") and purgeWrite.
   void write(const ParticleSystem& particles, const RunState& state);

@@ -486,7 +486,12 @@ RunOutcome Solver::run(const Writer& write, const Monitor& afterStep, const Obse
   const double startTime = state_.time;
   lastWrittenStep_ = state_.step; // the start time directory is on disk
   RunOutcome outcome;
-  if (state_.step == 0) checkStartDensity();
+  if (state_.step == 0) {
+    checkStartDensity();
+    // 0/ as sampled holds positions and velocities only; rewritten with the start's densities, saturations and
+    // (zero) pressures, it offers ParaView every array at t = 0 that later times have.
+    writeState(write);
+  }
   notePoreFluidFill();
   log::info("Starting time loop\n");
   while (!control_.endTimeReached(state_.time)) {

@@ -2,6 +2,10 @@
 // (runTimeModifiable), a NaN (the health checks of solverDict), and a write that fails (a full disk).
 
 #include "CaseRunner.hpp"
+#include "io/ParticleVtk.hpp"
+#include "physics/FieldNames.hpp"
+
+#include <algorithm>
 
 #include <sys/resource.h>
 
@@ -236,6 +240,33 @@ TEST(OutputErrors, AnUnfinishedDirectoryOfAKilledRunIsRemovedAtTheNextStart) {
   ASSERT_EQ(runner.solve("-threads 1"), 0) << runner.read("log.poroSph");
   EXPECT_FALSE(std::filesystem::exists(runner.dir() / ".0.03.tmp"));
   EXPECT_NE(runner.read("log.poroSph").find(".0.03.tmp: removed an unfinished time directory"), std::string::npos);
+}
+
+TEST(OutputAtTimeZero, HoldsEveryArrayOfALaterTime) {
+  // ParaView builds its array list from the first time it opens: 0/ as sampled held positions and velocities
+  // only, so density, pressure and saturation could not be chosen at t = 0 and colouring set up there broke.
+  CaseRunner runner(CaseSource{POROSPH_BAD_INPUTS "/base"});
+  ASSERT_EQ(runner.sample(), 0) << runner.read("log.sampleParticles");
+  ASSERT_EQ(runner.solve(), 0) << runner.read("log.poroSph");
+  const auto times = listTimeDirectories(runner.dir());
+  ASSERT_GE(times.size(), 2u);
+  for (const auto& [file, kind] : {std::pair{"fluid.vtp", SetKind::Fluid}, std::pair{"porous.vtp", SetKind::Porous}}) {
+    ParticleSet atStart("start", kind), atEnd("end", kind);
+    auto first = readParticleSet(atStart, runner.dir() / "0" / file);
+    auto last = readParticleSet(atEnd, runner.dir() / times.back().name / file);
+    std::sort(first.begin(), first.end());
+    std::sort(last.begin(), last.end());
+    EXPECT_EQ(first, last) << file;
+    // The start's densities are computed, not placeholders: rho / rho^max of a sampled lattice is about 1.
+    const auto& rho = atStart.real(field::density);
+    ASSERT_FALSE(rho.empty());
+    EXPECT_GT(*std::min_element(rho.begin(), rho.end()), 100.0) << file;
+  }
+  // The static walls and the record of what was sampled stay in 0/, and a restart from 0/ still runs.
+  EXPECT_TRUE(std::filesystem::exists(runner.dir() / "0" / "boundary.vtp"));
+  EXPECT_TRUE(std::filesystem::exists(runner.dir() / "0" / "uniform" / "sampling"));
+  runner.setKey("system/controlDict", "startFrom", "startTime");
+  EXPECT_EQ(runner.solve(), 0) << runner.read("log.poroSph");
 }
 
 } // namespace
