@@ -1,5 +1,5 @@
 #pragma once
-/// What the particles of a time directory were sampled from (issue 19, "no silent wrong run"): `<t>/uniform/sampling`,
+/// What the particles of a time directory were sampled from: `<t>/uniform/sampling`,
 /// written by sampleParticles into 0/ and copied by TimeWriter into every later time directory, so that a run from any
 /// of them is checked against the case as it stands. It holds
 ///   regions:          every region of system/particleDict as sampled, in order, with every key but a wall's `motion`

@@ -1,9 +1,9 @@
 #pragma once
 /// Checks of the sampled regions of system/particleDict against each other, after sampling and before anything is
-/// written (issue 19, "no silent wrong run"). Each region's particles carry its index in `regions` as objectId.
+/// written. Each region's particles carry its index in `regions` as objectId.
 ///
 /// Overlaps. Two regions must not sample the same space: where they do, the density is twice the rest density and
-/// the first pressure solve blows the particles apart (issue 19: such cases ran at up to 55,940 m/s). Refused are
+/// the first pressure solve blows the particles apart (such cases ran at up to 55,940 m/s). Refused are
 /// particles of two regions closer than kOverlapFraction * 2r for the pairs fluid-fluid, fluid-wall, porous-wall and
 /// porous-porous (bodies do not interpenetrate, METHOD.md §3.2). Fluid inside a porous region stays allowed (a
 /// pre-saturated body), and walls may overlap walls (a wall particle's volume comes from its wall neighbours).
