@@ -99,9 +99,11 @@ SimulationCase readCase(const fs::path& caseDir, int threads) {
   }
   RunState start = readRunState(caseDir / startName);
   checkSampledRegions(caseDir, caseDir / startName); // before reading what may be gigabytes of particles
-  ParticleSystem particles = readParticles(caseDir, startName, radius, materials);
-  // As OpenFOAM: a finished case run again (startFrom latestTime) reports that it is done; the caller exits 0.
+  // As OpenFOAM: a finished case run again (startFrom latestTime) reports that it is done; the caller exits 0
+  // without the particles.
   const bool endTimeReached = control.endTimeReached(start.time);
+  ParticleSystem particles =
+      endTimeReached ? ParticleSystem(radius) : readParticles(caseDir, startName, radius, materials);
   return SimulationCase{control,   output, solver, fluid, std::move(materials), startName, start, std::move(particles),
                         std::move(wallMotions), endTimeReached};
 }

@@ -27,7 +27,8 @@ struct SimulationCase {
   RunState start;
   ParticleSystem particles;
   std::vector<ObjectMotion> wallMotions; ///< the `motion:` blocks of system/particleDict's boundary regions
-  /// The start time directory is at endTime or after it (a finished case run again): nothing to run.
+  /// The start time directory is at endTime or after it (a finished case run again): nothing to run, and
+  /// `particles` is empty.
   bool endTimeReached = false;
 };
 

@@ -97,7 +97,8 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
     }
   }
   if (fluidSets > 1) throw InputError("more than one fluid particle set; PoroSPH simulates one fluid");
-  if (state_.nextDeltaT <= 0.0) state_.nextDeltaT = control_.deltaT;
+  // A run from step 0 starts with controlDict's deltaT: a rewritten 0/ records the step of the run before.
+  if (state_.step == 0 || state_.nextDeltaT <= 0.0) state_.nextDeltaT = control_.deltaT;
   for (const ObjectMotion& m : wallMotions_) {
     std::size_t n = 0;
     for (std::size_t k : boundarySets_) {
@@ -138,6 +139,11 @@ void Solver::checkStartPositions() {
          "directory (startFrom startTime in system/controlDict); health.leavingDomain: warn in system/solverDict "
          "runs on with them where they are.";
   throw InputError(msg.str());
+}
+
+void Solver::checkStart() {
+  if (state_.step == 0) checkStartDensity();
+  startChecked_ = true;
 }
 
 void Solver::checkStartDensity() {
@@ -204,6 +210,12 @@ void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
   if (material.youngsModulus > 0.0) Elasticity::registerFields(set);
   // The rest state is the sampled one: X = x at step 0, read back from the time directory afterwards.
   if (state_.step == 0) rest = set.x();
+  if (state_.step == 0) { // 0/ is rewritten at step 0: fixedBox must not stick to it, an edited one applies anew
+    const bool rewritten = set.has(field::sampledFixed);
+    auto& sampled = set.addInt(field::sampledFixed, Restart);
+    if (rewritten) fixed = sampled;
+    else sampled = fixed;
+  }
   if (material.fixedBox) { // strictly inside the material's fixedBox at X (METHOD.md §4.2)
     const auto& [lo, hi] = *material.fixedBox;
     for (std::size_t i = 0; i < set.size(); ++i)
@@ -487,7 +499,7 @@ RunOutcome Solver::run(const Writer& write, const Monitor& afterStep, const Obse
   lastWrittenStep_ = state_.step; // the start time directory is on disk
   RunOutcome outcome;
   if (state_.step == 0) {
-    checkStartDensity();
+    if (!startChecked_) checkStart();
     // 0/ as sampled holds positions and velocities only; rewritten with the start's densities, saturations and
     // (zero) pressures, it offers ParaView every array at t = 0 that later times have.
     writeState(write);

@@ -35,7 +35,7 @@ struct StepReport {
 struct RunOutcome {
   enum class End { EndTime, StopAt, Signal };
   End end = End::EndTime;
-  int signal = 0; ///< with End::Signal: SIGINT or SIGTERM
+  int signal = 0; ///< with End::Signal: SIGINT, SIGTERM or SIGHUP
 };
 
 class Solver {
@@ -57,9 +57,12 @@ public:
   using Observer = std::function<void(const Solver&)>;
   /// Advances to endTime, logging progress per step and calling `write` at every write time. A run from step 0
   /// first logs the densest particles and throws InputError above health.startDensity (physics/StartDensity.hpp).
-  /// SIGINT or SIGTERM (core/StopSignals.hpp) and stopAt end the run after the current step. After each step the
+  /// SIGINT, SIGTERM or SIGHUP (core/StopSignals.hpp) and stopAt end the run after the current step. After each step the
   /// health checks of solverDict run; a failed check with policy stop writes the last good state and throws
   /// NumericalError naming the particles, where they are and what to change.
+  /// At step 0: computes the start's densities and refuses a start denser than health.startDensity (an
+  /// InputError naming the particles). Call it before anything is written; run() calls it if it was not.
+  void checkStart();
   RunOutcome run(const Writer& write, const Monitor& afterStep = {}, const Observer& stepDone = {});
   /// One time step of size `deltaT` (METHOD.md §5).
   void step(double deltaT);
@@ -127,6 +130,7 @@ private:
   std::optional<Domain> domain_;   ///< particles outside it fail the leaving-domain check
   std::size_t outsideReported_ = 0; ///< particles outside the domain already warned about (policy warn)
   long long lastWrittenStep_ = -1;
+  bool startChecked_ = false; ///< checkStart() ran (main calls it before anything is written)
   long long injectNaNStep_ = -1;
 };
 

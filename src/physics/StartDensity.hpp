@@ -1,5 +1,5 @@
 #pragma once
-/// The start check of solverDict `health.startDensity` (issue 19, "no silent wrong run"): particles that
+/// The start check of solverDict `health.startDensity`: particles that
 /// start a run packed denser than their density limit. Incompressibility is rho~ = rho/rho^max <= 1
 /// (METHOD.md §3.3), so the first pressure solve pushes any excess apart within one step, at speeds of order
 /// (rho~ - 1) 2r / deltaT: a smaller deltaT makes the start more violent, not gentler (measured, r = 2 cm,

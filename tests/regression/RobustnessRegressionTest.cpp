@@ -265,8 +265,12 @@ TEST(OutputAtTimeZero, HoldsEveryArrayOfALaterTime) {
   // The static walls and the record of what was sampled stay in 0/, and a restart from 0/ still runs.
   EXPECT_TRUE(std::filesystem::exists(runner.dir() / "0" / "boundary.vtp"));
   EXPECT_TRUE(std::filesystem::exists(runner.dir() / "0" / "uniform" / "sampling"));
+  // A run from the rewritten 0/ takes controlDict's deltaT, not the step 0/uniform/time recorded.
   runner.setKey("system/controlDict", "startFrom", "startTime");
+  runner.setKey("system/controlDict", "deltaT", "0.0005");
+  std::filesystem::remove(runner.dir() / "log.poroSph");
   EXPECT_EQ(runner.solve(), 0) << runner.read("log.poroSph");
+  EXPECT_NE(runner.read("log.poroSph").find("deltaT = 0.0005 "), std::string::npos) << runner.read("log.poroSph");
 }
 
 } // namespace

@@ -1,4 +1,4 @@
-// What a run must not start from (issue 19, "no silent wrong run"): particles packed denser than their density
+// What a run must not start from: particles packed denser than their density
 // limit (health.startDensity, physics/StartDensity.hpp) and particles outside the domain. Both are found before
 // step 1 and reported as input errors.
 
