@@ -43,6 +43,7 @@ struct Writes {
   std::vector<std::vector<Vec3>> positions;
   Solver::Writer writer() {
     return [this](const Solver& s) {
+      if (s.state().step == 0) return; // the start's rewrite of 0/ (Solver::run), not a write these tests check
       steps.push_back(s.state().step);
       positions.push_back(s.particles()[0].x());
     };
