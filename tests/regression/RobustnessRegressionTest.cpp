@@ -273,5 +273,30 @@ TEST(OutputAtTimeZero, HoldsEveryArrayOfALaterTime) {
   EXPECT_NE(runner.read("log.poroSph").find("deltaT = 0.0005 "), std::string::npos) << runner.read("log.poroSph");
 }
 
+TEST(OutputAtTimeZero, AnEditedFixedBoxAppliesAtTheNextRunFromZero) {
+  // The rewritten 0/ stores the Fixed flags a material's fixedBox added; they must not stick to the particles
+  // once the fixedBox is removed (sampledFixed keeps the flags as sampled).
+  CaseRunner runner(CaseSource{POROSPH_BAD_INPUTS "/base"});
+  runner.replace("system/particleDict", "    fixed: true", "    fixed: false");
+  const std::string materials = runner.read("constant/porosityProperties");
+  runner.write("constant/porosityProperties", materials + "  fixedBox: {min: [-1, -1, -1], max: [2, 2, 2]}\n");
+  // The block rests on the floor in lattice contact; held, it is not judged, free it would be refused.
+  runner.write("system/solverDict", runner.read("system/solverDict") + "health:\n  startDensity: 2\n");
+  ASSERT_EQ(runner.sample(), 0) << runner.read("log.sampleParticles");
+  ASSERT_EQ(runner.solve(), 0) << runner.read("log.poroSph");
+  const auto fixedCount = [&](const std::string& time) {
+    ParticleSet set("soil", SetKind::Porous);
+    readParticleSet(set, runner.dir() / time / "porous.vtp");
+    const auto& fixed = set.integer(field::fixed);
+    return std::count(fixed.begin(), fixed.end(), 1);
+  };
+  EXPECT_EQ(fixedCount("0"), 75);
+  runner.write("constant/porosityProperties", materials);
+  runner.setKey("system/controlDict", "startFrom", "startTime");
+  ASSERT_EQ(runner.solve(), 0) << runner.read("log.poroSph");
+  EXPECT_EQ(fixedCount("0"), 0);
+  EXPECT_EQ(fixedCount("0.003"), 0);
+}
+
 } // namespace
 } // namespace poro::test
