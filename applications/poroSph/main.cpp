@@ -39,6 +39,7 @@ int main(int argc, char* argv[]) try {
   Solver solver(std::move(simulation.particles), simulation.fluid, std::move(simulation.materials), simulation.solver,
                 simulation.control, simulation.start, std::move(simulation.wallMotions));
   log::info("Threads: " + std::to_string(parallel::threads()));
+  solver.checkStart(); // a refused start leaves case.pvd and postProcessing as they were
   TimeWriter writer(args.caseDir(), simulation.output, simulation.startName);
   writer.setMovingWalls(movingWalls);
   if (const char* step = std::getenv("POROSPH_INJECT_NAN_STEP")) { // tests the health checks end to end

@@ -3,6 +3,7 @@
 #include "analysis/SaturationPlots.hpp"
 #include "analysis/SaturationTables.hpp"
 #include "core/Error.hpp"
+#include "io/OutputDirectory.hpp"
 
 namespace poro {
 
@@ -12,7 +13,7 @@ std::vector<fs::path> writeSaturationReport(const std::vector<TimeRecord>& recor
                                             const fs::path& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec) throw OutputError(dir.string() + ": cannot create directory: " + ec.message());
+  if (ec) throw OutputError(whyDirectoryFails(dir, ec));
   std::vector<fs::path> written = {dir / "timeSeries.csv", dir / "saturationProfiles.csv"};
   timeSeriesTable(records).write(written[0]);
   profileTable(records).write(written[1]);

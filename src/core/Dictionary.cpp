@@ -129,6 +129,59 @@ std::string describeValue(const YAML::Node& v) {
   }
 }
 
+// A value in canonical YAML flow form (Dictionary::canonical): numbers as formatNumber writes them, words plain,
+// other scalars double-quoted with YAML escapes, sequences in order, mappings sorted by key. Reading the text back and
+// canonicalising it again gives the same text.
+std::string canonicalScalar(const std::string& s) {
+  bool integral = false;
+  if (isDecimal(s, integral)) {
+    const double x = std::strtod(s.c_str(), nullptr);
+    if (std::isfinite(x)) return formatNumber(x);
+  }
+  // Words stay plain (column, yMax, true, stone.stl): YAML reads them back as the same text. Anything else is
+  // quoted, including the words YAML reads as null.
+  const bool word = !s.empty() && (std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_') &&
+                    std::all_of(s.begin(), s.end(), [](char c) {
+                      return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-';
+                    });
+  if (word && lower(s) != "null") return s;
+  std::string out = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02X", static_cast<unsigned char>(c));
+      out += hex;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+std::string canonicalNode(const YAML::Node& node) {
+  switch (node.Type()) {
+  case YAML::NodeType::Scalar: return canonicalScalar(node.Scalar());
+  case YAML::NodeType::Sequence: {
+    std::string out = "[";
+    for (std::size_t i = 0; i < node.size(); ++i) out += (i ? ", " : "") + canonicalNode(node[i]);
+    return out + "]";
+  }
+  case YAML::NodeType::Map: {
+    std::vector<std::pair<std::string, std::string>> entries;
+    for (const auto& kv : node) entries.emplace_back(canonicalNode(kv.first), canonicalNode(kv.second));
+    std::sort(entries.begin(), entries.end());
+    std::string out = "{";
+    for (std::size_t i = 0; i < entries.size(); ++i)
+      out += (i ? ", " : "") + entries[i].first + ": " + entries[i].second;
+    return out + "}";
+  }
+  default: return "~";
+  }
+}
+
 // (path prefix, key): a pair rather than the joined string, so a key that itself contains '.' cannot
 // pose as a sub-dictionary entry.
 using KnownKeys = std::set<std::pair<std::string, std::string>>;
@@ -405,6 +458,11 @@ std::vector<std::string> Dictionary::keys() const {
   std::vector<std::string> out;
   for (const auto& kv : impl_->node) out.push_back(kv.first.Scalar());
   return out;
+}
+
+std::string Dictionary::canonical(const std::string& key) const {
+  const auto e = impl_->find(key);
+  return e ? canonicalNode(e->value) : std::string();
 }
 
 double Dictionary::getReal(const std::string& key, const Range& range) const {

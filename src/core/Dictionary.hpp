@@ -55,6 +55,12 @@ public:
   /// Keys present, in file order.
   std::vector<std::string> keys() const;
 
+  /// The value of `key` in a canonical YAML flow form, to tell whether two files say the same: numbers in their
+  /// shortest decimal form ("0.20" and "2e-1" are "0.2"), words plain, other scalars double-quoted, mappings with
+  /// their keys sorted, so comments, layout, quoting and key order make no difference. "" when the key is absent. Does
+  /// not count as reading the key (checkUnknownKeys).
+  std::string canonical(const std::string& key) const;
+
   /// Required scalars. Wrong type, NaN/inf, out of range: InputError naming file, line, key and value.
   double getReal(const std::string& key, const Range& range = Range::any()) const;
   double getReal(const std::string& key, double fallback, const Range& range = Range::any()) const;

@@ -2,7 +2,6 @@
 
 #include <csignal>
 #include <cstring>
-#include <initializer_list>
 
 #include <unistd.h>
 
@@ -29,11 +28,18 @@ extern "C" void recordSignal(int signal) {
 } // namespace
 
 void installStopHandlers() {
+  constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP};
   struct sigaction action {};
   action.sa_handler = recordSignal;
   sigemptyset(&action.sa_mask);
+  for (int signal : kStopSignals) sigaddset(&action.sa_mask, signal); // one handler at a time: the second waits
   action.sa_flags = SA_RESTART; // a stop request must not fail a write(2) in progress with EINTR
-  for (int signal : {SIGINT, SIGTERM, SIGHUP}) sigaction(signal, &action, nullptr);
+  for (int signal : kStopSignals) {
+    struct sigaction before {};
+    // A signal ignored by whoever started us (nohup ignores SIGHUP) stays ignored.
+    if (sigaction(signal, nullptr, &before) == 0 && before.sa_handler == SIG_IGN) continue;
+    sigaction(signal, &action, nullptr);
+  }
 }
 
 int stopRequested() { return requested; }

@@ -6,7 +6,7 @@
 
 namespace poro::signals {
 
-/// Installs the handlers for SIGINT, SIGTERM and SIGHUP.
+/// Installs the handlers for SIGINT, SIGTERM and SIGHUP (one that is ignored, as nohup ignores SIGHUP, stays so).
 void installStopHandlers();
 /// The signal that asked the run to stop, or 0.
 int stopRequested();

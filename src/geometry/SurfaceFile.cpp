@@ -34,6 +34,10 @@ using Point = Kernel::Point_3;
 using Polygon = std::vector<std::size_t>;
 using Mesh = CGAL::Surface_mesh<Point>;
 
+/// The largest coordinate magnitude a surface may have: cubes of differences of such coordinates, summed over millions
+/// of faces, stay below the largest double (1.8e308).
+constexpr double kMaxCoordinate = 1e100;
+
 std::string format(const Point& p) {
   std::ostringstream out;
   out << '(' << p.x() << ", " << p.y() << ", " << p.z() << ')';
@@ -111,9 +115,20 @@ private:
     }
     if (!read) fail("cannot read it as " + name + ": the file is damaged, empty or not " + name);
     if (polygons_.empty()) fail("holds no faces; expected a closed surface of triangles in " + name);
-    for (std::size_t v = 0; v < points_.size(); ++v)
-      if (!std::isfinite(points_[v].x()) || !std::isfinite(points_[v].y()) || !std::isfinite(points_[v].z()))
+    for (std::size_t v = 0; v < points_.size(); ++v) {
+      const Point& p = points_[v];
+      if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
         fail("vertex " + std::to_string(v + 1) + " has a coordinate that is not a finite number");
+      // The volume sums products of three coordinates and the size squares them: beyond this they overflow to inf
+      // and the surface would seem to enclose no volume.
+      if (std::max({std::abs(p.x()), std::abs(p.y()), std::abs(p.z())}) > kMaxCoordinate) {
+        std::ostringstream msg;
+        msg << "vertex " << v + 1 << " at " << format(p) << " has a coordinate beyond +-" << kMaxCoordinate
+            << ", too large to compute the enclosed volume with (products of three coordinates overflow); check "
+            << "the file's units and what its exporter wrote";
+        fail(msg.str());
+      }
+    }
     for (std::size_t f = 0; f < polygons_.size(); ++f)
       for (std::size_t v : polygons_[f])
         if (v >= points_.size())

@@ -2,7 +2,9 @@
 /// A closed surface read from a file: STL (ASCII or binary), OBJ, OFF or PLY, checked to bound a volume and
 /// oriented outward (with CGAL, behind this header). Each problem is an InputError that starts with the file's
 /// path and says what is wrong, how often and where one case of it is, in the file's own coordinates:
-///   - an unknown extension, a file that cannot be opened or parsed, no faces, coordinates that are not finite;
+///   - an unknown extension, a file that cannot be opened or parsed, no faces, coordinates that are not finite or
+///   beyond
+///     +-1e100 (the volume would overflow);
 ///   - faces that are not triangles (triangulated instead when `repair` is true, with a note);
 ///   - degenerate faces (corners that coincide or lie on one line);
 ///   - open boundary edges (edges of one face only: the surface is not closed, so it has no inside);

@@ -121,18 +121,19 @@ void renameAtomically(const fs::path& from, const fs::path& to) {
   // Never a moment without a complete `to`: exchange the two in one step (Linux), then delete the old one.
   if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_EXCHANGE) == 0) {
     syncDirectory(to.parent_path());
-    fs::remove_all(from, ec); // now the old content; a kill before this leaves it to removeStaleTemporaries
+    fs::remove_all(from, ec); // now the old content; a kill before this leaves it to recoverInterruptedWrites
     return;
   }
-  if (errno != EINVAL && errno != ENOSYS && errno != EXDEV) cannot("exchange with", errno);
+  if (errno != EINVAL && errno != ENOSYS) cannot("exchange with", errno); // EXDEV: no rename could do it either
   // A file system without exchange: put the old one aside, move the new one in, delete the old one. A kill in
-  // between leaves `.<name>.old`, which removeStaleTemporaries restores when `to` is missing.
+  // between leaves `.<name>.old`, which recoverInterruptedWrites restores when `to` is missing.
   const fs::path aside = asideName(to);
   fs::remove_all(aside, ec);
   if (std::rename(to.c_str(), aside.c_str()) != 0) cannot("move aside", errno);
   if (std::rename(from.c_str(), to.c_str()) != 0) {
     const int error = errno;
-    std::rename(aside.c_str(), to.c_str()); // put the old one back: a failed replace keeps it
+    if (std::rename(aside.c_str(), to.c_str()) != 0) // put the old one back: a failed replace keeps it
+      cannot("rename to (the old one stays as " + aside.filename().string() + ", restored at the next start)", error);
     cannot("rename to", error);
   }
   syncDirectory(to.parent_path());

@@ -3,6 +3,7 @@
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
 #include "io/ControlDictWatcher.hpp"
+#include "io/SamplingRecord.hpp"
 #include "io/TimeDirectory.hpp"
 
 #include <cmath>
@@ -97,9 +98,12 @@ SimulationCase readCase(const fs::path& caseDir, int threads) {
                                                        : "; the case has " + names + " (or use startFrom: latestTime)"));
   }
   RunState start = readRunState(caseDir / startName);
-  ParticleSystem particles = readParticles(caseDir, startName, radius, materials);
-  // As OpenFOAM: a finished case run again (startFrom latestTime) reports that it is done; the caller exits 0.
+  checkSampledRegions(caseDir, caseDir / startName); // before reading what may be gigabytes of particles
+  // As OpenFOAM: a finished case run again (startFrom latestTime) reports that it is done; the caller exits 0
+  // without the particles.
   const bool endTimeReached = control.endTimeReached(start.time);
+  ParticleSystem particles =
+      endTimeReached ? ParticleSystem(radius) : readParticles(caseDir, startName, radius, materials);
   return SimulationCase{control,   output, solver, fluid, std::move(materials), startName, start, std::move(particles),
                         std::move(wallMotions), endTimeReached};
 }

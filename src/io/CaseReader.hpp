@@ -1,7 +1,8 @@
 #pragma once
 /// Reads and validates a whole case before anything runs (ARCHITECTURE.md "Input is checked at the
 /// door"): system/controlDict, system/solverDict, constant/fluidProperties, constant/porosityProperties, the
-/// particle radius of system/particleDict, and the particles of the start time directory.
+/// particle radius of system/particleDict, and the particles of the start time directory, which must have been sampled
+/// from the regions system/particleDict has now (io/SamplingRecord.hpp).
 
 #include "io/OutputSettings.hpp"
 #include "physics/FluidProperties.hpp"
@@ -26,7 +27,8 @@ struct SimulationCase {
   RunState start;
   ParticleSystem particles;
   std::vector<ObjectMotion> wallMotions; ///< the `motion:` blocks of system/particleDict's boundary regions
-  /// The start time directory is at endTime or after it (a finished case run again): nothing to run.
+  /// The start time directory is at endTime or after it (a finished case run again): nothing to run, and
+  /// `particles` is empty.
   bool endTimeReached = false;
 };
 

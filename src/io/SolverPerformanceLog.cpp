@@ -1,6 +1,7 @@
 #include "io/SolverPerformanceLog.hpp"
 
 #include "core/Log.hpp"
+#include "io/OutputDirectory.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -20,9 +21,13 @@ SolverPerformanceLog::SolverPerformanceLog(const fs::path& caseDir, const std::s
       previous_(phaseColumns().size(), 0.0) {
   std::error_code ec;
   fs::create_directories(file_.parent_path(), ec);
+  if (ec) {
+    fail(whyDirectoryFails(file_.parent_path(), ec));
+    return;
+  }
   out_.open(file_, std::ios::trunc);
-  if (ec || !out_) {
-    fail();
+  if (!out_) {
+    fail(file_.string() + ": cannot write (" + std::strerror(errno) + ")");
     return;
   }
   out_ << "step,time_s,deltaT_s,maxSpeed_m_per_s,maxFluidDensity_rho0,pressureIterations,pressureConverged,"
@@ -54,13 +59,12 @@ void SolverPerformanceLog::record(const Solver& solver) {
   }
   out_ << '\n';
   out_.flush(); // a killed run keeps its rows
-  if (!out_) fail();
+  if (!out_) fail(file_.string() + ": cannot write (" + std::strerror(errno) + ")");
 }
 
-void SolverPerformanceLog::fail() {
+void SolverPerformanceLog::fail(const std::string& why) {
   failed_ = true;
-  log::warning(file_.string() + ": cannot write (" + std::strerror(errno) +
-               "); the run goes on without its solverPerformance record");
+  log::warning(why + "; the run goes on without its solverPerformance record");
 }
 
 } // namespace poro

@@ -27,7 +27,8 @@ public:
 
 private:
   double phaseSeconds(const Solver& solver, const std::string& phase) const;
-  void fail();
+  /// Reports `why` once; no row is written after it.
+  void fail(const std::string& why);
 
   std::filesystem::path file_;
   std::ofstream out_;

@@ -6,12 +6,14 @@
 #include "io/AtomicFile.hpp"
 #include "io/ParticleVtk.hpp"
 #include "io/PorousSets.hpp"
+#include "io/SamplingRecord.hpp"
 
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -95,6 +97,11 @@ void writeRunState(const fs::path& dir, const RunState& state, double particleRa
   writeFileAtomically(dir / "uniform" / "time", out.str());
 }
 
+/// uniform/sampling (io/SamplingRecord.hpp), unless there is no record to write.
+void writeSamplingRecord(const fs::path& dir, const std::string& record) {
+  if (!record.empty()) writeFileAtomically(dir / "uniform" / kSamplingRecordName, record);
+}
+
 const char* fileOfPhase(const std::string& phase) {
   return phase == "fluid" ? "fluid.vtp" : phase == "porous" ? "porous.vtp" : "boundary.vtp";
 }
@@ -150,6 +157,17 @@ void checkPhasesPresent(const fs::path& caseDir, const fs::path& dir, const std:
     if (phase != "fluid" && phase != "porous" && phase != "boundary") continue;
     const std::string file = fileOfPhase(phase);
     if (fs::exists(dir / file) || (phase == "boundary" && fs::exists(caseDir / "0" / file))) continue;
+    if (phase == "boundary" && dir.filename() != "0") { // a restart: walls that stand still live in 0/ only
+      const fs::path zero = caseDir / "0";
+      throw InputError(
+          (fs::is_directory(zero) ? (zero / file).string() + ": no such file" : zero.string() + ": no such directory") +
+          ", but " + region.where("phase") + " samples boundary region '" + name +
+          "'. Walls that do not move are written once, to 0/boundary.vtp, not to later time directories such as " +
+          dir.filename().string() +
+          "/, so without it the run would have no walls. Restore 0/, or run sampleParticles again with the same "
+          "system/particleDict (it rewrites 0/ and case.pvd) and start again from " +
+          dir.filename().string());
+    }
     throw InputError((dir / file).string() + ": no such file, but " + region.where("phase") + " samples " + phase +
                      " region '" + name + "'" +
                      (dir.filename() == "0" ? "; run sampleParticles again (it writes 0/)"
@@ -279,8 +297,10 @@ ParticleSystem readParticles(const fs::path& caseDir, const std::string& name, d
   const std::optional<Dictionary> particleDict = readParticleDict(caseDir);
   checkRadius(dir, particleDict, particleRadius);
   checkPhasesPresent(caseDir, dir, particleDict);
+  checkSampledMaterials(caseDir, dir, materials);
   ParticleSystem particles(particleRadius);
   for (const fs::path& file : files) {
+    const std::size_t first = particles.size();
     if (kindOfFile(file) == SetKind::Porous) {
       ParticleSet merged(kPorousSetName, SetKind::Porous);
       const auto arrays = readParticleSet(merged, file);
@@ -291,6 +311,7 @@ ParticleSystem readParticles(const fs::path& caseDir, const std::string& name, d
       ParticleSet& set = particles.add(file.stem().string(), kindOfFile(file));
       checkIds(file, readParticleSet(set, file), set.integer(field::id));
     }
+    for (std::size_t s = first; s < particles.size(); ++s) particles[s].source = file.string();
   }
   if (!particles.find("fluid"))
     throw InputError(dir.string() + ": no fluid.vtp; run sampleParticles first (it writes 0/)");
@@ -311,6 +332,10 @@ TimeWriter::TimeWriter(fs::path caseDir, const OutputSettings& settings, const s
   }
   series_.removeTimesAfter(start);
   recoverInterruptedWrites(caseDir_);
+  // The record of what the particles were sampled from goes with them into every time directory (a restart from
+  // any of them is checked, io/SamplingRecord.hpp); copied as it is.
+  if (std::ifstream record{caseDir_ / startName / "uniform" / kSamplingRecordName})
+    samplingRecord_.assign(std::istreambuf_iterator<char>(record), std::istreambuf_iterator<char>());
   for (const auto& entry : fs::directory_iterator(caseDir_ / startName))
     if (isParticleFile(entry.path()))
       series_.add(start, entry.path().stem().string(), startName + "/" + entry.path().filename().string());
@@ -321,9 +346,12 @@ TimeWriter::TimeWriter(fs::path caseDir, const OutputSettings& settings, const s
 void TimeWriter::write(const ParticleSystem& particles, const RunState& state) {
   const std::string name = timeName(state.time);
   std::vector<std::string> parts;
+  // Static walls live in the start directory 0/ only, so rewriting 0/ (step 0) writes them too.
+  const bool withBoundaries = movingWalls_ || state.step == 0;
   writeDirectoryAtomically(caseDir_, name, [&](const fs::path& dir) {
-    parts = writeSets(dir, particles, movingWalls_, settings_.binary);
+    parts = writeSets(dir, particles, withBoundaries, settings_.binary);
     writeRunState(dir, state, particles.particleRadius());
+    writeSamplingRecord(dir, samplingRecord_);
   });
   for (const std::string& part : parts) series_.add(state.time, part, name + "/" + part + ".vtp");
   if (settings_.purgeWrite > 0) purge();
@@ -368,13 +396,14 @@ void TimeWriter::purge() {
   }
 }
 
-void TimeWriter::writeAll(const fs::path& caseDir, const ParticleSystem& particles, const RunState& state,
-                          bool binary) {
+void TimeWriter::writeAll(const fs::path& caseDir, const ParticleSystem& particles, const RunState& state, bool binary,
+                          const std::string& samplingRecord) {
   const std::string name = timeName(state.time);
   std::vector<std::string> parts;
   writeDirectoryAtomically(caseDir, name, [&](const fs::path& dir) {
     parts = writeSets(dir, particles, true, binary);
     writeRunState(dir, state, particles.particleRadius());
+    writeSamplingRecord(dir, samplingRecord);
   });
   PvdSeries series;
   for (const std::string& part : parts) series.add(state.time, part, name + "/" + part + ".vtp");

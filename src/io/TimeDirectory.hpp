@@ -1,8 +1,9 @@
 #pragma once
 /// Time directories of a case (ARCHITECTURE.md "A case directory"): `<t>/fluid.vtp`, `<t>/porous.vtp` (all
-/// porous sets in one file, io/PorousSets.hpp), `<t>/boundary.vtp` and `<t>/uniform/time` (time, step index,
-/// the coming step's deltaT), written under a temporary name and renamed when complete; `case.pvd` rewritten atomically
-/// after each write; boundary sets are static and live in `0/` only.
+/// porous sets in one file, io/PorousSets.hpp), `<t>/boundary.vtp`, `<t>/uniform/time` (time, step index,
+/// the coming step's deltaT) and `<t>/uniform/sampling` (what the particles were sampled from, io/SamplingRecord.hpp),
+/// written under a temporary name and renamed when complete; `case.pvd` rewritten atomically after each write;
+/// boundary sets are static and live in `0/` only.
 
 #include "io/OutputSettings.hpp"
 #include "io/PvdSeries.hpp"
@@ -41,8 +42,9 @@ RunState readRunState(const std::filesystem::path& timeDir);
 /// of `materials` (constant/porosityProperties order), named after the material (splitPorousSet). The surfaces
 /// above are skipped; any other .vtp file in the directory, a missing fluid.vtp and a porous.vtp the materials cannot split are InputErrors,
 /// and so are a file without the array 'id' or with two particles of the same id, a `particleRadius` other than
-/// the one uniform/time records, and, when the case has a readable system/particleDict, a missing file of a
-/// phase its regions sample (a deleted boundary.vtp or porous.vtp).
+/// the one uniform/time records, when the case has a readable system/particleDict, a missing file of a phase its
+/// regions sample (a deleted boundary.vtp or porous.vtp), and a materialId that names another material than the one
+/// uniform/sampling records it was sampled as (checkSampledMaterials).
 ParticleSystem readParticles(const std::filesystem::path& caseDir, const std::string& timeName, double particleRadius,
                              const std::vector<PorousMaterial>& materials);
 
@@ -57,17 +59,19 @@ public:
   /// Starts the series at the time directory `startName` (entries after it are dropped from case.pvd).
   TimeWriter(std::filesystem::path caseDir, const OutputSettings& settings, const std::string& startName);
 
-  /// Writes `<t>/` for the dynamic sets (fluid.vtp, porous.vtp), with moving walls also boundary.vtp, and
-  /// uniform/time, atomically, then case.pvd (one part per file: "fluid", "porous", "boundary") and purgeWrite.
+  /// Writes `<t>/` for the dynamic sets (fluid.vtp, porous.vtp), with moving walls or at step 0 also boundary.vtp, and
+  /// uniform/time (and uniform/sampling when the start time directory has it), atomically, then case.pvd (one part
+  /// per file: "fluid", "porous", "boundary") and purgeWrite.
   void write(const ParticleSystem& particles, const RunState& state);
   /// Walls move (prescribed motion): every time directory gets boundary.vtp, which a restart reads back.
   void setMovingWalls(bool moving) { movingWalls_ = moving; }
   /// New writeFormat / purgeWrite from a re-read system/controlDict; the next write uses them.
   void setSettings(const OutputSettings& settings) { settings_ = settings; }
 
-  /// Writes a complete time directory including boundary sets (sampleParticles writes 0/ with this).
+  /// Writes a complete time directory including boundary sets (sampleParticles writes 0/ with this), and
+  /// uniform/sampling when `samplingRecord` is not empty (io/SamplingRecord.hpp).
   static void writeAll(const std::filesystem::path& caseDir, const ParticleSystem& particles, const RunState& state,
-                       bool binary);
+                       bool binary, const std::string& samplingRecord = "");
 
 private:
   void purge();
@@ -75,6 +79,7 @@ private:
   OutputSettings settings_;
   PvdSeries series_;
   bool movingWalls_ = false;
+  std::string samplingRecord_; ///< uniform/sampling of the start time directory, copied into every one written
 };
 
 } // namespace poro

@@ -7,6 +7,8 @@ namespace poro::field {
 inline constexpr const char* pi = "pi";         ///< pi = rho^max p / rho^2 of the last pressure solve [m^2/s^2]
 inline constexpr const char* deltaV = "deltaV"; ///< last implicit increment u - v^n (CG warm start) [m/s]
 inline constexpr const char* fixed = "fixed"; ///< porous: 1 = Fixed (held in place, METHOD.md §4.2), 0 = Active (Int)
+/// porous: the Fixed flags as sampled (particleDict `fixed`), before a material's fixedBox adds to them (Int)
+inline constexpr const char* sampledFixed = "sampledFixed";
 inline constexpr const char* restPosition = "X";        ///< porous: initial position X (METHOD.md §4.1) [m]
 inline constexpr const char* rotation = "R"; ///< elastic porous: rotation R of the last step (warm start, §6.5.2)
 inline constexpr const char* materialId = "materialId"; ///< porous: index of the material in porosityProperties (Int)

@@ -13,6 +13,7 @@
 #include "physics/NumericalHealth.hpp"
 #include "physics/PoreFluidDensityBias.hpp"
 #include "physics/PorousDrag.hpp"
+#include "physics/StartDensity.hpp"
 #include "physics/TimeStepSize.hpp"
 #include "physics/VolumeFactors.hpp"
 #include "sph/BoundaryVolume.hpp"
@@ -96,7 +97,8 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
     }
   }
   if (fluidSets > 1) throw InputError("more than one fluid particle set; PoroSPH simulates one fluid");
-  if (state_.nextDeltaT <= 0.0) state_.nextDeltaT = control_.deltaT;
+  // A run from step 0 starts with controlDict's deltaT: a rewritten 0/ records the step of the run before.
+  if (state_.step == 0 || state_.nextDeltaT <= 0.0) state_.nextDeltaT = control_.deltaT;
   for (const ObjectMotion& m : wallMotions_) {
     std::size_t n = 0;
     for (std::size_t k : boundarySets_) {
@@ -110,6 +112,51 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
   }
   placeWalls(state_.time, state_.nextDeltaT);
   domain_ = settings_.health.domain ? settings_.health.domain : wallDomain(particles_, boundarySets_);
+  checkStartPositions();
+}
+
+void Solver::checkStartPositions() {
+  if (!domain_) return;
+  const auto outside = findOutside(particles_, dynamicSets_, *domain_);
+  if (outside.empty()) return;
+  std::ostringstream msg;
+  msg << std::setprecision(10);
+  for (std::size_t k = 0; k < outside.size(); ++k) {
+    const std::string& file = particles_[outside[k].set].source;
+    msg << (k ? "; " : "") << (file.empty() ? "" : file + ": ")
+        << describe(particles_, {outside[k]}, [&](std::size_t s, std::size_t i) { return particles_[s].x()[i]; });
+  }
+  msg << " outside the domain " << describeDomain() << ", at the start (time " << state_.time << " s, step "
+      << state_.step << ")";
+  if (settings_.health.leavingDomain == HealthAction::Warn) {
+    outsideReported_ = count(outside);
+    log::warning(msg.str() + " (health.leavingDomain warn: they stay in the run).");
+    return;
+  }
+  msg << ". No run writes particles there unless health.leavingDomain is warn (they stay) or stop (it stops "
+         "there), so the file is damaged or was edited, or the walls or health.domain changed since it was written "
+         "(in 0/: a region sampled far outside the walls). Restore the file or start from an earlier time "
+         "directory (startFrom startTime in system/controlDict); health.leavingDomain: warn in system/solverDict "
+         "runs on with them where they are.";
+  throw InputError(msg.str());
+}
+
+void Solver::checkStart() {
+  if (state_.step == 0) checkStartDensity();
+  startChecked_ = true;
+}
+
+void Solver::checkStartDensity() {
+  const StepContext ctx = beginStep(stepSizeFor(state_.nextDeltaT));
+  const double limit = settings_.health.startDensity;
+  const auto densest = densestAtStart(ctx, limit);
+  if (densest.empty()) return;
+  std::ostringstream line;
+  line << std::setprecision(6) << "Densest particles at the start (rho / rho^max; health.startDensity " << limit
+       << "): " << listDensest(particles_, densest);
+  log::info(line.str());
+  for (const DensestParticle& d : densest)
+    if (d.above > 0) throw InputError(describeOverDense(ctx, densest, limit));
 }
 
 void Solver::setTimeControl(const TimeControl& control) {
@@ -163,6 +210,12 @@ void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
   if (material.youngsModulus > 0.0) Elasticity::registerFields(set);
   // The rest state is the sampled one: X = x at step 0, read back from the time directory afterwards.
   if (state_.step == 0) rest = set.x();
+  if (state_.step == 0) { // 0/ is rewritten at step 0: fixedBox must not stick to it, an edited one applies anew
+    const bool rewritten = set.has(field::sampledFixed);
+    auto& sampled = set.addInt(field::sampledFixed, Restart);
+    if (rewritten) fixed = sampled;
+    else sampled = fixed;
+  }
   if (material.fixedBox) { // strictly inside the material's fixedBox at X (METHOD.md §4.2)
     const auto& [lo, hi] = *material.fixedBox;
     for (std::size_t i = 0; i < set.size(); ++i)
@@ -329,6 +382,16 @@ std::string Solver::whatToChange() const {
   return out.str();
 }
 
+std::string Solver::describeDomain() const {
+  const Vec3& lo = domain_->min;
+  const Vec3& hi = domain_->max;
+  std::ostringstream out;
+  out << std::setprecision(6) << '(' << lo.x() << ", " << lo.y() << ", " << lo.z() << ") - (" << hi.x() << ", "
+      << hi.y() << ", " << hi.z() << ')'
+      << (settings_.health.domain ? "" : ", the walls' bounding box grown by its longest side");
+  return out.str();
+}
+
 void Solver::checkHealth(const Writer& write) {
   const HealthSettings& health = settings_.health;
   const auto notFinite = findNonFinite(particles_, dynamicSets_);
@@ -357,13 +420,10 @@ void Solver::checkHealth(const Writer& write) {
     const auto outside = findOutside(particles_, dynamicSets_, *domain_);
     const std::size_t n = count(outside);
     if (n > 0 && (health.leavingDomain != HealthAction::Warn || n > outsideReported_)) {
-      const Vec3& lo = domain_->min;
-      const Vec3& hi = domain_->max;
       std::ostringstream msg;
       msg << std::setprecision(6) << "step " << state_.step << " (time " << state_.time << " s): "
           << describe(particles_, outside, [&](std::size_t s, std::size_t i) { return particles_[s].x()[i]; })
-          << " left the domain (" << lo.x() << ", " << lo.y() << ", " << lo.z() << ") - (" << hi.x() << ", " << hi.y()
-          << ", " << hi.z() << ")" << (settings_.health.domain ? "" : ", the walls' bounding box grown by its longest side")
+          << " left the domain " << describeDomain()
           << ". Particles escape through gaps in the walls wider than a particle diameter or are thrown out by a "
              "pressure spike ("
           << whatToChange() << "); health.domain in system/solverDict sets the domain";
@@ -438,6 +498,12 @@ RunOutcome Solver::run(const Writer& write, const Monitor& afterStep, const Obse
   const double startTime = state_.time;
   lastWrittenStep_ = state_.step; // the start time directory is on disk
   RunOutcome outcome;
+  if (state_.step == 0) {
+    if (!startChecked_) checkStart();
+    // 0/ as sampled holds positions and velocities only; rewritten with the start's densities, saturations and
+    // (zero) pressures, it offers ParaView every array at t = 0 that later times have.
+    writeState(write);
+  }
   notePoreFluidFill();
   log::info("Starting time loop\n");
   while (!control_.endTimeReached(state_.time)) {

@@ -35,7 +35,7 @@ struct StepReport {
 struct RunOutcome {
   enum class End { EndTime, StopAt, Signal };
   End end = End::EndTime;
-  int signal = 0; ///< with End::Signal: SIGINT or SIGTERM
+  int signal = 0; ///< with End::Signal: SIGINT, SIGTERM or SIGHUP
 };
 
 class Solver {
@@ -43,7 +43,8 @@ public:
   /// Takes the particles of a case (loaded from 0/ or a restart time directory) and validated settings.
   /// Each porous set is named after its material in `materials` (constant/porosityProperties). Walls whose
   /// object id has an entry in `wallMotions` move as prescribed; the others stay where they are. Throws
-  /// InputError when a motion's object has no wall particle.
+  /// InputError when a motion's object has no wall particle, and when particles of the fluid or porous sets lie
+  /// outside the domain (health.domain, or the walls' box grown) unless health.leavingDomain is warn.
   Solver(ParticleSystem particles, const FluidProperties& fluid, std::vector<PorousMaterial> materials,
          const SolverSettings& settings, const TimeControl& control, const RunState& start,
          std::vector<ObjectMotion> wallMotions = {});
@@ -54,10 +55,14 @@ public:
   using Monitor = std::function<void(Solver&)>;
   /// Called at the very end of each step, after any write (per-step records such as solverPerformance).
   using Observer = std::function<void(const Solver&)>;
-  /// Advances to endTime, logging progress per step and calling `write` at every write time. SIGINT or
-  /// SIGTERM (core/StopSignals.hpp) and stopAt end the run after the current step. After each step the
+  /// Advances to endTime, logging progress per step and calling `write` at every write time. A run from step 0
+  /// first logs the densest particles and throws InputError above health.startDensity (physics/StartDensity.hpp).
+  /// SIGINT, SIGTERM or SIGHUP (core/StopSignals.hpp) and stopAt end the run after the current step. After each step the
   /// health checks of solverDict run; a failed check with policy stop writes the last good state and throws
   /// NumericalError naming the particles, where they are and what to change.
+  /// At step 0: computes the start's densities and refuses a start denser than health.startDensity (an
+  /// InputError naming the particles). Call it before anything is written; run() calls it if it was not.
+  void checkStart();
   RunOutcome run(const Writer& write, const Monitor& afterStep = {}, const Observer& stepDone = {});
   /// One time step of size `deltaT` (METHOD.md §5).
   void step(double deltaT);
@@ -87,6 +92,10 @@ private:
   /// Without the pore-fluid correction, warns of porous materials whose pores fluid fills 10 % short or more
   /// (the absorbed-volume tolerance of VALIDATION.md): porosity below about 0.45.
   void notePoreFluidFill() const;
+  void checkStartPositions();
+  void checkStartDensity();
+  /// "(lo) - (hi)" of the domain, and where it comes from when not from health.domain.
+  std::string describeDomain() const;
   void checkHealth(const Writer& write);
   void checkIterations(const Writer& write);
   void writeState(const Writer& write);
@@ -121,6 +130,7 @@ private:
   std::optional<Domain> domain_;   ///< particles outside it fail the leaving-domain check
   std::size_t outsideReported_ = 0; ///< particles outside the domain already warned about (policy warn)
   long long lastWrittenStep_ = -1;
+  bool startChecked_ = false; ///< checkStart() ran (main calls it before anything is written)
   long long injectNaNStep_ = -1;
 };
 

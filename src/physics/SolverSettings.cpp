@@ -80,6 +80,7 @@ SolverSettings SolverSettings::read(const Dictionary& dict) {
     hs.leavingDomain = readAction(*h, "leavingDomain", {"warn", "remove", "stop"}, hs.leavingDomain);
     hs.pressureIterations = readAction(*h, "pressureIterations", {"warn", "stop"}, hs.pressureIterations);
     hs.implicitIterations = readAction(*h, "implicitIterations", {"warn", "stop"}, hs.implicitIterations);
+    hs.startDensity = h->getReal("startDensity", hs.startDensity, Range::atLeast(1.0));
     if (auto d = h->optionalSubDict("domain")) {
       Domain domain{d->getVec3("min"), d->getVec3("max")};
       if (!(domain.max.array() > domain.min.array()).all()) d->fail("max", "expected max > min in every component");

@@ -40,6 +40,9 @@ struct HealthSettings {
   HealthAction leavingDomain = HealthAction::Remove;    ///< outside `domain`: warn | remove | stop
   HealthAction pressureIterations = HealthAction::Warn; ///< pressure.maxIterations reached: warn | stop
   HealthAction implicitIterations = HealthAction::Warn; ///< implicit.maxIterations reached: warn | stop
+  /// Largest normalised density rho/rho^max a particle that can move may start a run with (step 0 only, see
+  /// physics/StartDensity.hpp); above it the run stops before step 1. >= 1.
+  double startDensity = 1.005;
   /// Absent: the walls' bounding box grown by its longest side in every direction (no check without walls).
   std::optional<Domain> domain;
 };

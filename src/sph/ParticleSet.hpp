@@ -87,6 +87,9 @@ public:
   double particleVolume = 0.0;
   double mass = 0.0;
   double restDensity = 0.0;
+  /// The file the set was read from (io fills it), for messages about its particles; empty when the set was
+  /// made in memory.
+  std::string source;
 
 private:
   struct FieldBase;

@@ -150,6 +150,9 @@ TEST(Restart, AFinishedCaseRunAgainSaysSoAndExitsZero) {
 void makeCoarsePorousWall(CaseRunner& runner, const std::string& endTime) {
   runner.setKey("system/particleDict", "particleRadius", "0.02");
   runner.replace("system/particleDict", "fixed: true", "fixed: false"); // the solid moves too
+  // Free, it may not touch the walls: in lattice contact it would start at rho/rho^max 1.041 (health.startDensity).
+  runner.replace("system/particleDict", "min: [0, 0, 0]", "min: [-0.002, -0.002, -0.002]"); // 0.1 r
+  runner.replace("system/particleDict", "max: [1.6, 1.2, 0.4]", "max: [1.602, 1.2, 0.402]");
   runner.setKey("system/controlDict", "endTime", endTime);
   runner.setKey("system/controlDict", "writeInterval", "0.05");
   runner.replace("system/solverDict", "sortInterval: 500", "sortInterval: 7");
@@ -274,6 +277,65 @@ TEST(Restart, ElasticBodyInReferenceModeRestartsBitForBit) {
   for (std::size_t i = 0; i < x.size(); ++i)
     spread = std::max(spread, ((x[i] - rest[i]) - (x[0] - rest[0])).norm());
   EXPECT_GT(spread, 1e-5);
+}
+
+/// The small valid case of the bad-input corpus (ascii particle files).
+const CaseSource kBaseCase{std::filesystem::path(POROSPH_BAD_INPUTS) / "base"};
+
+/// Samples and runs the base case for its three steps, then sets a later endTime for the restart.
+void runThreeSteps(CaseRunner& runner) {
+  ASSERT_EQ(runner.sample(), 0) << runner.read("log.sampleParticles");
+  ASSERT_EQ(runner.solve("-threads 1"), 0) << runner.read("log.poroSph");
+  runner.setKey("system/controlDict", "endTime", "0.005");
+}
+
+TEST(Restart, WithoutZeroTheMissingStaticWallsAreNamed) {
+  // The tank stands still, so its walls live in 0/boundary.vtp only; with 0/ deleted the restart from 0.003
+  // used to blame 0.003/boundary.vtp ("the time directory is incomplete").
+  CaseRunner runner(kBaseCase);
+  ASSERT_NO_FATAL_FAILURE(runThreeSteps(runner));
+  std::filesystem::remove_all(runner.dir() / "0");
+  EXPECT_EQ(runner.solve("-threads 1"), 1);
+  const std::string log = runner.read("log.poroSph");
+  const std::string dir = runner.dir().string();
+  EXPECT_NE(log.find("--> PoroSPH FATAL input error:\n" + dir + "/0: no such directory, but " + dir +
+                     "/system/particleDict:18 samples boundary region 'tank'. Walls that do not move are written "
+                     "once, to 0/boundary.vtp, not to later time directories such as 0.003/, so without it the run "
+                     "would have no walls. Restore 0/, or run sampleParticles again"),
+            std::string::npos)
+      << log;
+  EXPECT_EQ(listTimeDirectories(runner.dir()).back().name, "0.003");
+}
+
+/// Replaces the first x coordinate of an ascii particle file's Points.
+void moveFirstParticle(CaseRunner& runner, const std::string& file, const std::string& x) {
+  std::string text = runner.read(file);
+  const auto points = text.find("Name=\"Points\"");
+  ASSERT_NE(points, std::string::npos) << file;
+  const auto first = text.find_first_not_of(" \n", text.find('>', points) + 1);
+  text.replace(first, text.find(' ', first) - first, x);
+  runner.write(file, text);
+}
+
+TEST(Restart, AParticleOutsideTheDomainInARestartFileIsNamedAsInputDamage) {
+  // A particle 1000 km away in 0.003/fluid.vtp used to stop the first step's neighbour search with "particles
+  // are leaving the domain (reduce deltaT ...)" instead of being removed by health.leavingDomain remove.
+  CaseRunner runner(kBaseCase);
+  ASSERT_NO_FATAL_FAILURE(runThreeSteps(runner));
+  ASSERT_NO_FATAL_FAILURE(moveFirstParticle(runner, "0.003/fluid.vtp", "1e6"));
+  EXPECT_EQ(runner.solve("-threads 1"), 1);
+  const std::string log = runner.read("log.poroSph");
+  EXPECT_NE(log.find("--> PoroSPH FATAL input error:\n" + runner.dir().string() +
+                     "/0.003/fluid.vtp: 1 fluid particle: id "),
+            std::string::npos)
+      << log;
+  EXPECT_NE(log.find(" at (1e+06, "), std::string::npos) << log;
+  EXPECT_NE(log.find("outside the domain (-0.5, -0.5, -0.5) - (0.7, 0.82, 0.7), the walls' bounding box grown by "
+                     "its longest side, at the start (time 0.003 s, step 3)"),
+            std::string::npos)
+      << log;
+  EXPECT_EQ(log.find("reduce deltaT"), std::string::npos) << log;
+  EXPECT_EQ(listTimeDirectories(runner.dir()).back().name, "0.003");
 }
 
 } // namespace

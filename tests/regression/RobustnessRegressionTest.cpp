@@ -2,6 +2,10 @@
 // (runTimeModifiable), a NaN (the health checks of solverDict), and a write that fails (a full disk).
 
 #include "CaseRunner.hpp"
+#include "io/ParticleVtk.hpp"
+#include "physics/FieldNames.hpp"
+
+#include <algorithm>
 
 #include <sys/resource.h>
 
@@ -148,6 +152,39 @@ TEST(Health, InjectedNaNStopsWithTheLastFiniteStateWrittenAndTheRunResumes) {
   EXPECT_TRUE(a.find("fluid")->v() == b.find("fluid")->v());
 }
 
+TEST(Health, WaterSampledTooCloseToTheWallsIsRefusedBeforeStep1) {
+  // The tank's 1 mm wall offset is 0.05 r at r = 2 cm (0.056 r between particles: the walls split the tank's
+  // 0.402 m into 11 equal steps, off the water's lattice): the water starts at rho/rho^max 1.02, which the first
+  // pressure solve would blow apart (2.2 m/s at deltaT = 1 ms, 314 m/s at 1e-5 s) without a word.
+  CaseRunner runner("fluid/hydrostaticTank");
+  runner.setKey("system/particleDict", "particleRadius", "0.02");
+  runner.setKey("system/controlDict", "endTime", "0.01");
+  ASSERT_EQ(runner.sample(), 0) << runner.read("log.sampleParticles");
+  const std::string sampling = runner.read("log.sampleParticles");
+  EXPECT_NE(sampling.find("region water: smallest gap to the walls 0.056 r (0.00112 m), to region tank"),
+            std::string::npos)
+      << sampling;
+  EXPECT_NE(sampling.find("Warning: " + runner.dir().string() + "/system/particleDict:"), std::string::npos)
+      << sampling;
+  EXPECT_EQ(runner.solve("-threads 1"), 1);
+  const std::string log = runner.read("log.poroSph");
+  EXPECT_NE(log.find("Densest particles at the start (rho / rho^max; health.startDensity 1.005): fluid 1.0"),
+            std::string::npos)
+      << log;
+  EXPECT_NE(log.find("--> PoroSPH FATAL input error:\n" + runner.dir().string() + "/0/fluid.vtp: "), std::string::npos)
+      << log;
+  EXPECT_NE(log.find(" fluid particles start denser than health.startDensity = 1.005 allows"), std::string::npos)
+      << log;
+  EXPECT_NE(log.find("Leave a gap of 0.1 r or more"), std::string::npos) << log;
+  EXPECT_EQ(log.find("Time = "), std::string::npos) << "a step was done:\n" << log;
+  EXPECT_EQ(listTimeDirectories(runner.dir()).back().name, "0");
+
+  // The cure the message gives: 0.1 r.
+  makeCoarseTank(runner, "0.002", "0.001");
+  std::filesystem::remove(runner.dir() / "log.poroSph");
+  EXPECT_EQ(runner.solve("-threads 1"), 0) << runner.read("log.poroSph");
+}
+
 /// Runs the solver with files limited to `bytes` (RLIMIT_FSIZE, SIGXFSZ ignored): writes beyond it fail with
 /// EFBIG as on a full disk, for root too. Returns the exit code.
 int solveWithFileSizeLimit(const CaseRunner& runner, rlim_t bytes) {
@@ -203,6 +240,62 @@ TEST(OutputErrors, AnUnfinishedDirectoryOfAKilledRunIsRemovedAtTheNextStart) {
   ASSERT_EQ(runner.solve("-threads 1"), 0) << runner.read("log.poroSph");
   EXPECT_FALSE(std::filesystem::exists(runner.dir() / ".0.03.tmp"));
   EXPECT_NE(runner.read("log.poroSph").find(".0.03.tmp: removed an unfinished time directory"), std::string::npos);
+}
+
+TEST(OutputAtTimeZero, HoldsEveryArrayOfALaterTime) {
+  // ParaView builds its array list from the first time it opens: 0/ as sampled held positions and velocities
+  // only, so density, pressure and saturation could not be chosen at t = 0 and colouring set up there broke.
+  CaseRunner runner(CaseSource{POROSPH_BAD_INPUTS "/base"});
+  ASSERT_EQ(runner.sample(), 0) << runner.read("log.sampleParticles");
+  ASSERT_EQ(runner.solve(), 0) << runner.read("log.poroSph");
+  const auto times = listTimeDirectories(runner.dir());
+  ASSERT_GE(times.size(), 2u);
+  for (const auto& [file, kind] : {std::pair{"fluid.vtp", SetKind::Fluid}, std::pair{"porous.vtp", SetKind::Porous}}) {
+    ParticleSet atStart("start", kind), atEnd("end", kind);
+    auto first = readParticleSet(atStart, runner.dir() / "0" / file);
+    auto last = readParticleSet(atEnd, runner.dir() / times.back().name / file);
+    std::sort(first.begin(), first.end());
+    std::sort(last.begin(), last.end());
+    EXPECT_EQ(first, last) << file;
+    // The start's densities are computed, not placeholders: rho / rho^max of a sampled lattice is about 1.
+    const auto& rho = atStart.real(field::density);
+    ASSERT_FALSE(rho.empty());
+    EXPECT_GT(*std::min_element(rho.begin(), rho.end()), 100.0) << file;
+  }
+  // The static walls and the record of what was sampled stay in 0/, and a restart from 0/ still runs.
+  EXPECT_TRUE(std::filesystem::exists(runner.dir() / "0" / "boundary.vtp"));
+  EXPECT_TRUE(std::filesystem::exists(runner.dir() / "0" / "uniform" / "sampling"));
+  // A run from the rewritten 0/ takes controlDict's deltaT, not the step 0/uniform/time recorded.
+  runner.setKey("system/controlDict", "startFrom", "startTime");
+  runner.setKey("system/controlDict", "deltaT", "0.0005");
+  std::filesystem::remove(runner.dir() / "log.poroSph");
+  EXPECT_EQ(runner.solve(), 0) << runner.read("log.poroSph");
+  EXPECT_NE(runner.read("log.poroSph").find("deltaT = 0.0005 "), std::string::npos) << runner.read("log.poroSph");
+}
+
+TEST(OutputAtTimeZero, AnEditedFixedBoxAppliesAtTheNextRunFromZero) {
+  // The rewritten 0/ stores the Fixed flags a material's fixedBox added; they must not stick to the particles
+  // once the fixedBox is removed (sampledFixed keeps the flags as sampled).
+  CaseRunner runner(CaseSource{POROSPH_BAD_INPUTS "/base"});
+  runner.replace("system/particleDict", "    fixed: true", "    fixed: false");
+  const std::string materials = runner.read("constant/porosityProperties");
+  runner.write("constant/porosityProperties", materials + "  fixedBox: {min: [-1, -1, -1], max: [2, 2, 2]}\n");
+  // The block rests on the floor in lattice contact; held, it is not judged, free it would be refused.
+  runner.write("system/solverDict", runner.read("system/solverDict") + "health:\n  startDensity: 2\n");
+  ASSERT_EQ(runner.sample(), 0) << runner.read("log.sampleParticles");
+  ASSERT_EQ(runner.solve(), 0) << runner.read("log.poroSph");
+  const auto fixedCount = [&](const std::string& time) {
+    ParticleSet set("soil", SetKind::Porous);
+    readParticleSet(set, runner.dir() / time / "porous.vtp");
+    const auto& fixed = set.integer(field::fixed);
+    return std::count(fixed.begin(), fixed.end(), 1);
+  };
+  EXPECT_EQ(fixedCount("0"), 75);
+  runner.write("constant/porosityProperties", materials);
+  runner.setKey("system/controlDict", "startFrom", "startTime");
+  ASSERT_EQ(runner.solve(), 0) << runner.read("log.poroSph");
+  EXPECT_EQ(fixedCount("0"), 0);
+  EXPECT_EQ(fixedCount("0.003"), 0);
 }
 
 } // namespace

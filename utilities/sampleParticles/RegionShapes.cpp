@@ -48,9 +48,10 @@ Vec3 readScale(const Dictionary& region) {
 std::string listSurfaces(const fs::path& directory) {
   std::error_code ec;
   if (!fs::is_directory(directory, ec)) return "there is no directory " + directory.string();
-  std::vector<std::string> names;
+  std::vector<std::string> names; // directories with a trailing '/': a folder is not a surface file
   for (const auto& entry : fs::directory_iterator(directory, ec))
-    if (entry.is_regular_file()) names.push_back(entry.path().filename().string());
+    if (entry.is_regular_file() || entry.is_directory())
+      names.push_back(entry.path().filename().string() + (entry.is_directory() ? "/" : ""));
   if (names.empty()) return directory.string() + " is empty";
   std::sort(names.begin(), names.end());
   std::string list;
@@ -83,6 +84,8 @@ SurfaceSource readSurfaceKeys(const Dictionary& region, const fs::path& surfaceD
   SurfaceSource source;
   source.path = surfaceDirectory / region.getString("file");
   std::error_code ec;
+  if (fs::is_directory(source.path, ec))
+    region.fail("file", source.path.string() + " is a directory; expected a surface file (STL, OBJ, OFF or PLY)");
   if (!fs::is_regular_file(source.path, ec))
     region.fail("file", "no surface file " + source.path.string() + "; " + listSurfaces(surfaceDirectory));
   source.transform = readSurfaceTransform(region);

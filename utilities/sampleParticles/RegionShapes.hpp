@@ -31,7 +31,7 @@ struct SurfaceSource {
 };
 
 /// Reads file, the transform keys and repair (default false). A file missing from `surfaceDirectory` is an
-/// error at the `file` key that lists the files there.
+/// error at the `file` key that lists the files there; so is a directory of the file's name.
 SurfaceSource readSurfaceKeys(const Dictionary& region, const std::filesystem::path& surfaceDirectory);
 
 /// Reads, checks and places the surface (after the region's keys are all checked: a mesh may take a while), and

@@ -1,11 +1,15 @@
-/// sampleParticles: system/particleDict -> 0/ (fluid.vtp, porous.vtp, boundary.vtp, uniform/time) and case.pvd.
+/// sampleParticles: system/particleDict -> 0/ (fluid.vtp, porous.vtp, boundary.vtp, uniform/time, uniform/sampling)
+/// and case.pvd.
 
 #include "ParticleRegions.hpp"
+#include "RegionPlacement.hpp"
+#include "WallGaps.hpp"
 #include "core/Arguments.hpp"
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "io/CaseReader.hpp"
+#include "io/SamplingRecord.hpp"
 #include "io/TimeDirectory.hpp"
 #include "physics/FieldNames.hpp"
 
@@ -58,8 +62,8 @@ int main(int argc, char* argv[]) try {
   if (!fs::is_directory(caseDir)) throw InputError(caseDir.string() + ": case directory not found");
   const std::string dictPath = (caseDir / "system" / "particleDict").string();
   const std::vector<PorousMaterial> materials = readPorousMaterials(caseDir);
-  const ParticleDict dict =
-      ParticleDict::read(Dictionary::read(dictPath), materials, caseDir / "constant" / "triSurface");
+  const Dictionary particleDict = Dictionary::read(dictPath);
+  const ParticleDict dict = ParticleDict::read(particleDict, materials, caseDir / "constant" / "triSurface");
   const bool binary = [&] {
     const fs::path control = caseDir / "system" / "controlDict";
     if (!fs::exists(control)) return true;
@@ -106,8 +110,12 @@ int main(int argc, char* argv[]) try {
     log::info(line.str());
   }
 
+  checkRegionPlacement(dict, particles); // before 0/ is written: a refused case keeps its old 0/
+  reportWallGaps(particles, dict);
   fs::create_directories(caseDir);
-  TimeWriter::writeAll(caseDir, particles, RunState{}, binary);
+  // What 0/ was sampled from: poroSph refuses to run it once particleDict's regions or the materials' order change.
+  TimeWriter::writeAll(caseDir, particles, RunState{}, binary,
+                       samplingRecord(particleDict, caseDir / "constant" / "triSurface", particles, materials));
   std::ostringstream done;
   done << "Wrote " << (caseDir / "0").string() << " with " << particles.particleCount() << " particles (radius "
        << dict.particleRadius << " m) and " << (caseDir / "case.pvd").string() << "\nEnd";

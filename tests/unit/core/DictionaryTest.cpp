@@ -566,5 +566,30 @@ TEST(Dictionary, CopiesShareKnownKeysAndStayIndependent) {
   EXPECT_DOUBLE_EQ(sub->getReal("tol"), 5.0);
 }
 
+TEST(Dictionary, CanonicalIgnoresCommentsLayoutQuotingAndNumberSpelling) {
+  const Dictionary a = Dictionary::parse("box: {min: [0, 0.2, 1e-3], max: [1, 1, 1], open: [yMax]}\n"
+                                         "name: tank\nfixed: true\n",
+                                         kFile);
+  const Dictionary b = Dictionary::parse("# edited\nbox:\n  max: [1.0, 10e-1, 1]   # reordered keys\n"
+                                         "  min: [-0, 0.20, 0.001]\n  open:\n    - yMax\n"
+                                         "name: 'tank'\nfixed: \"true\"\n",
+                                         kFile);
+  for (const char* key : {"box", "name", "fixed"}) EXPECT_EQ(a.canonical(key), b.canonical(key)) << key;
+  EXPECT_EQ(a.canonical("box"), "{max: [1, 1, 1], min: [0, 0.2, 0.001], open: [yMax]}");
+  EXPECT_EQ(a.canonical("absent"), "");
+  // Any other edit is a change.
+  const Dictionary c = Dictionary::parse("box: {min: [0, 0.2, 2e-3], max: [1, 1, 1], open: [yMax, xMax]}\n", kFile);
+  EXPECT_NE(a.canonical("box"), c.canonical("box"));
+}
+
+TEST(Dictionary, CanonicalReadsBackAsItself) {
+  const Dictionary a = Dictionary::parse("v: [stone.stl, 'a b', \"quote\\\" and \\\\\", ~, null, 'null', '', "
+                                         "'007', {k: [1, 2]}]\n",
+                                         kFile);
+  const std::string text = a.canonical("v");
+  EXPECT_EQ(Dictionary::parse("v: " + text + "\n", kFile).canonical("v"), text);
+  EXPECT_EQ(text, "[stone.stl, \"a b\", \"quote\\\" and \\\\\", ~, ~, \"null\", \"\", 7, {k: [1, 2]}]");
+}
+
 } // namespace
 } // namespace poro

@@ -67,5 +67,34 @@ TEST(SolverPerformanceLog, OneRowPerStepMatchingTheSolversReports) {
   EXPECT_NEAR(rowPhaseSum, phaseSum, 1e-5 + 1e-5 * phaseSum);
 }
 
+TEST(SolverPerformanceLog, AFileNamedPostProcessingIsNamedAsTheProblem) {
+  // create_directories fails with "Not a directory" or "File exists" and the open with "No such file or
+  // directory"; neither says which path is wrong. The run goes on, with one warning that does.
+  ScratchDirectory dir;
+  writeAll(dir / "postProcessing", "not a directory");
+  ::testing::internal::CaptureStderr();
+  const SolverPerformanceLog log(dir.path(), "0");
+  const std::string warning = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(warning, "Warning: " + (dir / "postProcessing").string() + " is a file, not a directory, so " +
+                         (dir / "postProcessing" / "solverPerformance" / "0").string() +
+                         " cannot be created: rename or remove the file; the run goes on without its "
+                         "solverPerformance record\n");
+}
+
+TEST(SolverPerformanceLog, ADirectoryWithoutWritePermissionIsNamedAsTheProblem) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root ignores directory permissions";
+  ScratchDirectory dir;
+  std::filesystem::create_directories(dir / "postProcessing");
+  std::filesystem::permissions(dir / "postProcessing",
+                               std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+  ::testing::internal::CaptureStderr();
+  const SolverPerformanceLog log(dir.path(), "0");
+  const std::string warning = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(warning.find((dir / "postProcessing").string() +
+                         ": no permission to create solverPerformance/0 in this directory"),
+            std::string::npos)
+      << warning;
+}
+
 } // namespace
 } // namespace poro::test
