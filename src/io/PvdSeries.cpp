@@ -131,8 +131,10 @@ void PvdSeries::write(const fs::path& path) const {
     filesOf[entry.part][entry.time] = entry.file;
   }
   const double first = times.empty() ? 0.0 : *std::min_element(times.begin(), times.end());
-  const auto isStatic = [&](const std::map<double, std::string>& files) {
-    return files.size() == 1 && files.begin()->first == first;
+  // Only the walls are written once for the whole run; a surface fluidSurface made at the first time (or any
+  // other set with one file there) belongs to that time alone.
+  const auto isStatic = [&](const std::string& part, const std::map<double, std::string>& files) {
+    return part == kStaticPart && files.size() == 1 && files.begin()->first == first;
   };
   std::ostringstream out;
   out << "<?xml version=\"1.0\"?>\n"
@@ -144,7 +146,7 @@ void PvdSeries::write(const fs::path& path) const {
       auto latest = files.upper_bound(time);
       if (latest == files.begin()) continue; // the part does not exist yet
       --latest;
-      if (latest->first != time && !isStatic(files)) continue; // no file of this time
+      if (latest->first != time && !isStatic(parts[index], files)) continue; // no file of this time
       out << "    <DataSet timestep=\"" << formatTime(time) << "\" group=\"\" part=\"" << index << "\" name=\""
           << escapeXml(parts[index]) << "\" file=\"" << escapeXml(latest->second) << "\"/>\n";
     }

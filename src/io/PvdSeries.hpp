@@ -9,6 +9,9 @@
 
 namespace poro {
 
+/// The one part that may be static: the walls sampleParticles writes once into 0/boundary.vtp.
+inline constexpr const char* kStaticPart = "boundary";
+
 class PvdSeries {
 public:
   struct Entry {
@@ -32,11 +35,12 @@ public:
 
   /// Writes the collection atomically (writeFileAtomically): per time (in order of first appearance) one
   /// `<DataSet timestep=".." group="" part="k" name="<part>" file=".."/>` per part, times with 17 significant
-  /// digits, part indices 0, 1, ... in order of first appearance of each part name. A static set (a part with
-  /// a single file, at the series' first time: the boundary sampleParticles writes once into 0/) is listed at
-  /// every time with that file: ParaView's reader shows only the files of the current time, so the set stays
-  /// visible and keeps its block index and name. Any other part is listed only at the times it has a file,
-  /// so a surface that fluidSurface made for some times never shows at others. Throws OutputError.
+  /// digits, part indices 0, 1, ... in order of first appearance of each part name. The static set (the part
+  /// kStaticPart with a single file, at the series' first time: the boundary sampleParticles writes once into 0/)
+  /// is listed at every time with that file: ParaView's reader shows only the files of the current time, so the
+  /// set stays visible and keeps its block index and name. Any other part is listed only at the times it has a
+  /// file, so a surface that fluidSurface made for some times (also only for the first) never shows at others.
+  /// Throws OutputError.
   void write(const std::filesystem::path& path) const;
 
   /// Reads a collection written by write() (or by ParaView): the DataSet elements' timestep and file
