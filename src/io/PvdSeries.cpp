@@ -119,6 +119,15 @@ void PvdSeries::removeTime(const std::string& timeName) {
                  entries_.end());
 }
 
+void PvdSeries::removeMissingFiles(double time, const fs::path& baseDir) {
+  entries_.erase(std::remove_if(entries_.begin(), entries_.end(),
+                                [&](const Entry& e) {
+                                  std::error_code ec;
+                                  return e.time == time && !fs::exists(baseDir / e.file, ec);
+                                }),
+                 entries_.end());
+}
+
 void PvdSeries::write(const fs::path& path) const {
   // Parts in order of first appearance (their pvd part index) and, per part, its entries by time: a static
   // part shows its one file at every later time.

@@ -33,6 +33,10 @@ public:
   /// Drops the entries whose file lies in the time directory `timeName` (e.g. "0.1"; purgeWrite).
   void removeTime(const std::string& timeName);
 
+  /// Drops the entries of exactly this time value whose file (relative to `baseDir`, the directory of the .pvd)
+  /// does not exist: after a time directory is rewritten, the surfaces fluidSurface had added to it are gone.
+  void removeMissingFiles(double time, const std::filesystem::path& baseDir);
+
   /// Writes the collection atomically (writeFileAtomically): per time (in order of first appearance) one
   /// `<DataSet timestep=".." group="" part="k" name="<part>" file=".."/>` per part, times with 17 significant
   /// digits, part indices 0, 1, ... in order of first appearance of each part name. The static set (the part

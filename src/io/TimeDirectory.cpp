@@ -353,6 +353,8 @@ void TimeWriter::write(const ParticleSystem& particles, const RunState& state) {
     writeRunState(dir, state, particles.particleRadius());
     writeSamplingRecord(dir, samplingRecord_);
   });
+  // A rewritten directory (a run again from 0 replaces 0/) has lost the surfaces fluidSurface added to the old one.
+  series_.removeMissingFiles(state.time, caseDir_);
   for (const std::string& part : parts) series_.add(state.time, part, name + "/" + part + ".vtp");
   if (settings_.purgeWrite > 0) purge();
   series_.write(caseDir_ / kPvdName);

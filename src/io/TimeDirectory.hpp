@@ -61,7 +61,8 @@ public:
 
   /// Writes `<t>/` for the dynamic sets (fluid.vtp, porous.vtp), with moving walls or at step 0 also boundary.vtp, and
   /// uniform/time (and uniform/sampling when the start time directory has it), atomically, then case.pvd (one part
-  /// per file: "fluid", "porous", "boundary") and purgeWrite.
+  /// per file: "fluid", "porous", "boundary") and purgeWrite. When `<t>/` existed (a run again from 0 rewrites 0/),
+  /// case.pvd's entries of t whose files the rewrite removed (fluidSurface.vtp, porousSurface.vtp) are dropped.
   void write(const ParticleSystem& particles, const RunState& state);
   /// Walls move (prescribed motion): every time directory gets boundary.vtp, which a restart reads back.
   void setMovingWalls(bool moving) { movingWalls_ = moving; }
