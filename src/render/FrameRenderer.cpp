@@ -1,6 +1,7 @@
 #include "render/FrameRenderer.hpp"
 
 #include "core/Error.hpp"
+#include "io/AtomicFile.hpp"
 #include "render/ColourMap.hpp"
 #include "surface/VtkConversion.hpp"
 
@@ -10,6 +11,7 @@
 #include <vtkCellArray.h>
 #include <vtkClipPolyData.h>
 #include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
 #include <vtkFloatArray.h>
 #include <vtkLightKit.h>
 #include <vtkLookupTable.h>
@@ -31,7 +33,10 @@
 #include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <fstream>
 #include <sstream>
 
 namespace poro {
@@ -291,13 +296,24 @@ void FrameRenderer::render(const Scene& scene, const std::filesystem::path& png)
   grab->SetInput(m.window);
   grab->SetInputBufferTypeToRGB();
   grab->ReadFrontBufferOff();
+  // Into a temporary sibling, renamed over the frame when complete: a viewer or the movie encoder never reads a
+  // half-written frame, and a failed write leaves the old frame as it was. Created here first, so that the check
+  // below is about this write and a missing or read-only directory gets the OS's reason.
+  const std::filesystem::path temporary = temporarySibling(png);
+  if (!std::ofstream(temporary))
+    throw OutputError(png.string() + ": cannot create file (" + std::strerror(errno) + ")");
   vtkNew<vtkPNGWriter> writer;
   writer->SetInputConnection(grab->GetOutputPort());
   writer->SetCompressionLevel(9);
-  writer->SetFileName(png.c_str());
+  writer->SetFileName(temporary.c_str());
   writer->Write();
-  if (writer->GetErrorCode() != 0 || !std::filesystem::exists(png))
-    throw OutputError(png.string() + ": cannot write the PNG file");
+  std::error_code ec;
+  if (writer->GetErrorCode() != vtkErrorCode::NoError || std::filesystem::file_size(temporary, ec) == 0 || ec) {
+    const std::string reason = vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode());
+    std::filesystem::remove(temporary, ec);
+    throw OutputError(png.string() + ": cannot write the PNG file (" + reason + ")");
+  }
+  commitTemporaryFile(temporary, png);
 }
 
 } // namespace poro

@@ -8,6 +8,7 @@
 #include "render/ColourMap.hpp"
 #include "render/PngImage.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 
 namespace poro::test {
@@ -119,6 +120,23 @@ TEST_F(RenderCase, TheSurfaceDarkensWhereTheBlockIsWet) {
   // At time 0 (sampled, no saturation yet) the whole face is dry.
   const PngImage first = PngImage::read(runner_.dir() / "postProcessing/renderCase/0.png");
   EXPECT_GT(lightness(first.at(118, 106)), 70.0);
+}
+
+TEST_F(RenderCase, AFrameIsReplacedNotWrittenInPlace) {
+  // An old frame hard-linked elsewhere (a copy kept, a viewer holding it): a frame written into the old file would
+  // change the other name too, and a failed write would leave a half frame under the old name.
+  runner_.write("system/renderDict", kRenderDict);
+  const fs::path output = runner_.dir() / "postProcessing/renderCase";
+  fs::create_directories(output);
+  runner_.write("postProcessing/renderCase/kept.png", "old frame");
+  fs::create_hard_link(output / "kept.png", output / "1.png");
+  ASSERT_EQ(render("-time 1"), 0) << log();
+  EXPECT_EQ(runner_.read("postProcessing/renderCase/kept.png"), "old frame");
+  expectDryLeftWetRight(output / "1.png");
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(output)) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"1.png", "kept.png"})) << "no temporary is left behind";
 }
 
 TEST_F(RenderCase, TheMovieNeedsFfmpegAndSaysSo) {
