@@ -11,7 +11,10 @@ namespace poro {
 std::string findFfmpeg();
 
 /// Encodes `frames` (PNG files of one size, in order) at `frameRate` into `movie` with `ffmpeg`: H.264, yuv420p
-/// (plays everywhere; odd sizes are padded by a pixel). Throws OutputError with ffmpeg's last words if it fails.
+/// (plays everywhere; odd sizes are padded by a pixel). ffmpeg writes a temporary sibling that replaces `movie` only
+/// when every frame was read and sent and ffmpeg exited with status 0; SIGPIPE is ignored meanwhile (an ffmpeg that
+/// dies is reported, not fatal) and restored after. Throws OutputError naming the unreadable frame, the failed
+/// write or ffmpeg's exit status and last words; `movie` then stays as it was.
 void encodeMovie(const std::string& ffmpeg, const std::vector<std::filesystem::path>& frames, double frameRate,
                  const std::filesystem::path& movie);
 
