@@ -167,5 +167,50 @@ TEST_F(RenderCase, FluidSurfaceWritesClosedSurfacesAndListsThem) {
   EXPECT_NO_THROW(runner_.particles("1", kR));
 }
 
+// A surfaceDict whose grid would be too large: a settings error, the same at every time. It must end the run at once
+// with the file, line and key, not be taken for an unreadable time directory at every time ("none readable").
+const char* const kHugeGridSurfaceDict = "porous:\n  kernelRadius: 16\n  gridSpacing: 0.05\n";
+
+void expectStoppedAtTheDictionary(const std::string& log, const std::string& whereAndKey) {
+  EXPECT_NE(log.find(whereAndKey), std::string::npos) << log;
+  EXPECT_EQ(log.find("skipped"), std::string::npos) << log;
+  EXPECT_EQ(log.find("none of"), std::string::npos) << log;
+}
+
+TEST_F(RenderCase, FluidSurfaceStopsAtABadSurfaceDict) {
+  runner_.write("system/surfaceDict", kHugeGridSurfaceDict);
+  EXPECT_EQ(runner_.run(POROSPH_SURFACE, "", 120), 1);
+  expectStoppedAtTheDictionary(runner_.read("log.fluidSurface"), "system/surfaceDict:3: key 'gridSpacing'");
+}
+
+TEST_F(RenderCase, RenderCaseStopsAtABadSurfaceDict) {
+  runner_.write("system/renderDict", kRenderDict);
+  runner_.write("system/surfaceDict", kHugeGridSurfaceDict);
+  EXPECT_EQ(render(""), 1);
+  expectStoppedAtTheDictionary(log(), "system/surfaceDict:3: key 'gridSpacing'");
+}
+
+TEST_F(RenderCase, RenderCaseStopsAtABadRenderDict) {
+  // With a range given, the field is first looked up while drawing.
+  runner_.write("system/renderDict",
+                std::string(kRenderDict) + "porous: {show: particles, colourBy: wetness, range: [0, 1]}\n");
+  EXPECT_EQ(render(""), 1);
+  expectStoppedAtTheDictionary(log(), "system/renderDict:6: key 'porous.colourBy'");
+}
+
+// The case directory is named after the test: an error message that names it contains "renderDict" and "colourBy",
+// which must not make an unreadable time directory look like an error of the dictionary.
+TEST_F(RenderCase, SkipsAnUnreadableTimeOfACaseNamed_renderDict_colourBy) {
+  runner_.write("system/renderDict", std::string(kRenderDict) + "porous: {show: particles, colourBy: saturation}\n");
+  fs::create_directories(runner_.dir() / "0.5/uniform");
+  runner_.write("0.5/uniform/time", "time: 0.5\nstep: 50\ndeltaT: 0.001\n");
+  runner_.write("0.5/fluid.vtp", "not a VTK file");
+  ASSERT_EQ(render(""), 0) << log();
+  EXPECT_NE(log().find("0.5: cannot be read; skipped"), std::string::npos) << log();
+  EXPECT_TRUE(fs::exists(runner_.dir() / "postProcessing/renderCase/0.png")) << log();
+  EXPECT_FALSE(fs::exists(runner_.dir() / "postProcessing/renderCase/0.5.png")) << log();
+  expectDryLeftWetRight(runner_.dir() / "postProcessing/renderCase/1.png");
+}
+
 } // namespace
 } // namespace poro::test

@@ -14,6 +14,7 @@
 
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -87,28 +88,32 @@ int main(int argc, char* argv[]) try {
   if (fs::exists(pvd)) series = PvdSeries::read(pvd);
   std::size_t done = 0;
   for (const TimeCandidate& time : selection.complete) {
+    const Timer timer;
+    // Only the reading is tried: an unreadable directory is reported and skipped, never the end of the run, while an
+    // error of surfaceDict (a grid too large for gridSpacing) or of writing ends it at once, naming file and key.
+    std::optional<ParticleSystem> read;
     try {
-      const Timer timer;
-      const ParticleSystem particles =
-          readParticles(caseDir, time.name, analysis.particleRadius, analysis.materials);
-      std::ostringstream line;
-      line << "Time " << time.name << ":";
-      const double r = particles.particleRadius();
-      if (settings.writeFluid)
-        line << "\n  " << makeSurface(fluidCloud(particles, settings), settings.fluid, r, caseDir, time,
-                                      kFluidSurfaceFile, series);
-      bool porous = false;
-      for (std::size_t s = 0; s < particles.size(); ++s) porous = porous || particles[s].kind() == SetKind::Porous;
-      if (settings.writePorous && porous)
-        line << "\n  " << makeSurface(porousCloud(particles), settings.porous, r, caseDir, time, kPorousSurfaceFile,
-                                      series);
-      line << "\n  " << std::setprecision(3) << timer.seconds() << " s with reading and writing";
-      log::info(line.str());
-      series.write(pvd); // after every time: what is done stays listed if the run is stopped
-      ++done;
-    } catch (const InputError& e) { // an unreadable directory is reported and skipped, never the end of the run
+      read.emplace(readParticles(caseDir, time.name, analysis.particleRadius, analysis.materials));
+    } catch (const InputError& e) {
       log::warning((caseDir / time.name).string() + ": cannot be read; skipped:\n    " + e.what());
+      continue;
     }
+    const ParticleSystem& particles = *read;
+    std::ostringstream line;
+    line << "Time " << time.name << ":";
+    const double r = particles.particleRadius();
+    if (settings.writeFluid)
+      line << "\n  " << makeSurface(fluidCloud(particles, settings), settings.fluid, r, caseDir, time,
+                                    kFluidSurfaceFile, series);
+    bool porous = false;
+    for (std::size_t s = 0; s < particles.size(); ++s) porous = porous || particles[s].kind() == SetKind::Porous;
+    if (settings.writePorous && porous)
+      line << "\n  " << makeSurface(porousCloud(particles), settings.porous, r, caseDir, time, kPorousSurfaceFile,
+                                    series);
+    line << "\n  " << std::setprecision(3) << timer.seconds() << " s with reading and writing";
+    log::info(line.str());
+    series.write(pvd); // after every time: what is done stays listed if the run is stopped
+    ++done;
   }
   if (done == 0) throw noneReadable(caseDir, selection.complete.size());
   log::info("Wrote the surfaces of " + std::to_string(done) + " of " + std::to_string(selection.complete.size()) +

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -119,6 +120,16 @@ int main(int argc, char* argv[]) try {
   const auto readName = [&](const std::string& name) {
     return readParticles(caseDir, name, analysis.particleRadius, analysis.materials);
   };
+  // Only the reading of a time directory can fail for that time alone (it is named and skipped); an error in the
+  // settings (renderDict's colourBy, surfaceDict's gridSpacing) or in writing ends the run at once.
+  const auto readIfReadable = [&](const TimeCandidate& time, std::string& why) -> std::optional<ParticleSystem> {
+    try {
+      return readName(time.name);
+    } catch (const InputError& e) {
+      why = e.what();
+      return std::nullopt;
+    }
+  };
   // A broken first or last directory (warned about above if selected) gives way to the selection's.
   const auto readEither = [&](const std::string& name, const TimeCandidate& fallback) {
     try {
@@ -149,11 +160,10 @@ int main(int argc, char* argv[]) try {
     }
     double low = HUGE_VAL, high = -HUGE_VAL;
     for (const TimeCandidate& time : selection.complete) {
-      try {
-        for (double v : SceneBuilder::particleValues(readName(time.name), *style)) low = std::min(low, v), high = std::max(high, v);
-      } catch (const InputError& e) {
-        if (std::string(e.what()).find("colourBy") != std::string::npos) throw;
-      }
+      std::string why; // named when the time is drawn
+      const std::optional<ParticleSystem> particles = readIfReadable(time, why);
+      if (!particles) continue;
+      for (double v : SceneBuilder::particleValues(*particles, *style)) low = std::min(low, v), high = std::max(high, v);
     }
     if (!(low <= high)) low = 0.0, high = 1.0;
     if (high <= low) high = low + 1.0;
@@ -173,19 +183,20 @@ int main(int argc, char* argv[]) try {
   FrameRenderer renderer(settings, camera, ranges);
   std::vector<fs::path> frames;
   for (const TimeCandidate& time : selection.complete) {
-    try {
-      const Timer timer;
-      const Scene scene = builder.build(readName(time.name), time.name, time.time);
-      const fs::path png = output / (time.name + ".png");
-      renderer.render(scene, png);
-      frames.push_back(png);
-      std::ostringstream line;
-      line << "Time " << time.name << ": " << png.string() << " (" << std::setprecision(3) << timer.seconds() << " s)";
-      log::info(line.str());
-    } catch (const InputError& e) {
-      if (std::string(e.what()).find("renderDict") != std::string::npos) throw; // the dictionary, not the time
-      log::warning((caseDir / time.name).string() + ": cannot be read; skipped:\n    " + e.what());
+    const Timer timer;
+    std::string why;
+    const std::optional<ParticleSystem> particles = readIfReadable(time, why);
+    if (!particles) {
+      log::warning((caseDir / time.name).string() + ": cannot be read; skipped:\n    " + why);
+      continue;
     }
+    const Scene scene = builder.build(*particles, time.name, time.time);
+    const fs::path png = output / (time.name + ".png");
+    renderer.render(scene, png);
+    frames.push_back(png);
+    std::ostringstream line;
+    line << "Time " << time.name << ": " << png.string() << " (" << std::setprecision(3) << timer.seconds() << " s)";
+    log::info(line.str());
   }
   if (frames.empty()) throw noneReadable(caseDir, selection.complete.size());
   if (!ffmpeg.empty()) {
