@@ -7,8 +7,10 @@
 #include "physics/FieldNames.hpp"
 #include "render/ColourMap.hpp"
 #include "render/PngImage.hpp"
+#include "surface/SurfaceFile.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 namespace poro::test {
@@ -20,7 +22,7 @@ constexpr double kR = 0.01;
 
 const char* const kParticleDict = R"(particleRadius: 0.01
 regions:
-  - {name: drop, phase: fluid, shape: box, min: [0.5, 0, 0], max: [0.54, 0.04, 0.04]}
+  - {name: drop, phase: fluid, shape: box, min: [0.5, 0, 0], max: [0.58, 0.08, 0.08]}
   - {name: block, phase: porous, material: foam, shape: box, min: [0, 0, 0], max: [0.16, 0.16, 0.08], fixed: true}
 )";
 // Head on at the block's front face (z = 0.08), 20 degrees: the face spans the middle of a 200 px square.
@@ -35,9 +37,9 @@ camera: {position: [0.08, 0.08, 1.0], focalPoint: [0.08, 0.08, 0.04], viewUp: [0
 void writeTime(const fs::path& caseDir, double t) {
   ParticleSystem ps(kR);
   ParticleSet& fluid = ps.add("fluid", SetKind::Fluid);
-  fluid.resize(8);
-  for (int i = 0; i < 8; ++i) {
-    fluid.x()[i] = Vec3(0.5 + kR + 2 * kR * (i % 2), kR + 2 * kR * (i / 2 % 2), kR + 2 * kR * (i / 4));
+  fluid.resize(64);
+  for (int i = 0; i < 64; ++i) {
+    fluid.x()[i] = Vec3(0.5 + kR + 2 * kR * (i % 4), kR + 2 * kR * (i / 4 % 4), kR + 2 * kR * (i / 16));
     fluid.v()[i] = Vec3(0.0, -1.0, 0.0);
     fluid.integer(field::id)[i] = i;
   }
@@ -47,7 +49,7 @@ void writeTime(const fs::path& caseDir, double t) {
   auto* saturation = t > 0 ? &foam.addReal(field::saturation, Output) : nullptr;
   for (int i = 0; i < 256; ++i) {
     foam.x()[i] = Vec3(kR + 2 * kR * (i % 8), kR + 2 * kR * (i / 8 % 8), kR + 2 * kR * (i / 64));
-    foam.integer(field::id)[i] = 8 + i;
+    foam.integer(field::id)[i] = 64 + i;
     foam.integer(field::objectId)[i] = 1;
     if (saturation) (*saturation)[i] = foam.x()[i].x() < 0.08 ? 0.0 : 1.0;
   }
@@ -152,6 +154,32 @@ TEST_F(RenderCase, TheMovieNeedsFfmpegAndSaysSo) {
   }
 }
 
+/// The surface fluidSurface wrote around a lattice filling a box of sides `box`, with surfaceDict's defaults
+/// (isoValue 0.5, kernel support H = 4 r). It must be a closed, consistently oriented 2-manifold facing outward.
+/// Its volume: c = 0.5 on the lattice's faces, so the faces enclose the box, N (2r)^3, and to first order lose
+/// nothing; edges and corners are rounded, over about H/2 = 2r (where a corner particle's kernel no longer overlaps
+/// its neighbours'). Rounding an edge with radius rho removes (1 - pi/4) rho^2 per unit length, so the deficit is
+/// D = (1 - pi/4) (2r)^2 L / V with L = 4 (a + b + c) the length of the edges: it scales with the box's edge length
+/// per volume, the 8r drop's 12 / (8r)^2 loses 16 %, the 16r x 16r x 8r block 6.7 %. Corners (whose rounding the
+/// edge strips count roughly) and the approximate radius get half of D either way: the deficit must be in
+/// [0.5 D, 1.5 D]. A surface that is not closed, open at the grid's edge or inside out fails far outside it.
+void expectBoxSurface(const fs::path& file, const Vec3& box) {
+  SCOPED_TRACE(file.string());
+  const TriangleSurface surface = readSurface(file);
+  ASSERT_FALSE(surface.empty());
+  const TriangleSurface::Defects defects = surface.defects();
+  EXPECT_EQ(defects.openEdges, 0u);
+  EXPECT_EQ(defects.nonManifoldEdges, 0u);
+  EXPECT_EQ(defects.misorientedEdges, 0u);
+  const double volume = box.prod();
+  const double edges = 4.0 * box.sum();
+  const double rho = 2.0 * kR;
+  const double expectedDeficit = (1.0 - M_PI / 4.0) * rho * rho * edges / volume;
+  const double deficit = 1.0 - surface.enclosedVolume() / volume;
+  EXPECT_GT(deficit, 0.5 * expectedDeficit) << "enclosed " << surface.enclosedVolume() << " m^3 of " << volume;
+  EXPECT_LT(deficit, 1.5 * expectedDeficit) << "enclosed " << surface.enclosedVolume() << " m^3 of " << volume;
+}
+
 TEST_F(RenderCase, FluidSurfaceWritesClosedSurfacesAndListsThem) {
   ASSERT_EQ(runner_.run(POROSPH_SURFACE, "-latestTime", 120), 0) << runner_.read("log.fluidSurface");
   EXPECT_TRUE(fs::exists(runner_.dir() / "1/fluidSurface.vtp"));
@@ -160,9 +188,10 @@ TEST_F(RenderCase, FluidSurfaceWritesClosedSurfacesAndListsThem) {
   const std::string pvd = runner_.read("case.pvd");
   EXPECT_NE(pvd.find("name=\"fluidSurface\" file=\"1/fluidSurface.vtp\""), std::string::npos) << pvd;
   EXPECT_NE(pvd.find("name=\"porousSurface\" file=\"1/porousSurface.vtp\""), std::string::npos) << pvd;
-  // The 8-particle drop: a closed surface of (nearly) its 8 (2r)^3, the log says so.
-  const std::string log = runner_.read("log.fluidSurface");
-  EXPECT_NE(log.find("(8 particles: 6.4e-05 m^3)"), std::string::npos) << log;
+  // Each surface read back: closed and consistently oriented, facing outward, enclosing the particles' box less
+  // its rounded edges (expectBoxSurface).
+  expectBoxSurface(runner_.dir() / "1/fluidSurface.vtp", Vec3(8 * kR, 8 * kR, 8 * kR));   // the 4 x 4 x 4 drop
+  expectBoxSurface(runner_.dir() / "1/porousSurface.vtp", Vec3(16 * kR, 16 * kR, 8 * kR)); // the 8 x 8 x 4 block
   // The particles stay readable: the analysis and a restart skip the surfaces.
   EXPECT_NO_THROW(runner_.particles("1", kR));
 }
