@@ -173,15 +173,20 @@ void FrameRenderer::Impl::addCap(const SceneLayer& layer, vtkLookupTable* table,
 }
 
 void FrameRenderer::Impl::addParticles(const SceneLayer& layer, vtkLookupTable* table, bool coloured) {
-  if (layer.particles.empty()) return;
+  // A non-finite position (SceneBuilder leaves them out already) would make the bounds, and so the camera's
+  // clipping range, NaN: such particles are skipped with their values.
+  std::vector<double> values;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(layer.particles.size()));
-  for (std::size_t p = 0; p < layer.particles.size(); ++p)
-    points->SetPoint(static_cast<vtkIdType>(p), layer.particles[p].data());
+  for (std::size_t p = 0; p < layer.particles.size(); ++p) {
+    if (!layer.particles[p].allFinite()) continue;
+    points->InsertNextPoint(layer.particles[p].data());
+    if (coloured && p < layer.values.size()) values.push_back(layer.values[p]);
+  }
+  if (points->GetNumberOfPoints() == 0) return;
   vtkNew<vtkPolyData> poly;
   poly->SetPoints(points);
-  if (coloured) setValues(poly, layer.values);
+  if (coloured) setValues(poly, values);
   vtkNew<vtkPointGaussianMapper> mapper;
   mapper->SetInputData(poly);
   mapper->SetScaleFactor(layer.particleRadius);

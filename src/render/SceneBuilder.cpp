@@ -54,6 +54,11 @@ std::vector<double> surfaceValues(const TriangleSurface& surface, const std::str
   return f ? magnitudes(f->values, f->components) : std::vector<double>();
 }
 
+std::size_t finiteCount(const ParticleSet& set) {
+  return static_cast<std::size_t>(
+      std::count_if(set.x().begin(), set.x().end(), [](const Vec3& x) { return x.allFinite(); }));
+}
+
 bool clips(const RenderSettings& render, const std::string& set) {
   return render.clip && std::find(render.clip->sets.begin(), render.clip->sets.end(), set) != render.clip->sets.end();
 }
@@ -91,7 +96,7 @@ std::vector<double> SceneBuilder::particleValues(const ParticleSystem& particles
     if (set.kind() != kindOf(style.set)) continue;
     if (!set.has(style.colourBy)) {
       if (isSolverOutput(style.colourBy)) {
-        values.insert(values.end(), set.size(), 0.0);
+        values.insert(values.end(), finiteCount(set), 0.0);
         continue;
       }
       std::string names;
@@ -99,7 +104,8 @@ std::vector<double> SceneBuilder::particleValues(const ParticleSystem& particles
       throw InputError(style.where + ": key '" + style.set + ".colourBy': expected a field of the " + style.set +
                        " particles (" + names + "), got '" + style.colourBy + "'");
     }
-    for (std::size_t i = 0; i < set.size(); ++i) values.push_back(magnitude(set, style.colourBy, i));
+    for (std::size_t i = 0; i < set.size(); ++i)
+      if (set.x()[i].allFinite()) values.push_back(magnitude(set, style.colourBy, i));
   }
   return values;
 }
@@ -122,9 +128,12 @@ Scene SceneBuilder::build(const ParticleSystem& particles, const std::string& ti
     SceneLayer layer;
     layer.style = style;
     if (style->show == SetStyle::Show::Particles) {
+      // Particles of a diverged run (NaN or infinite positions) are left out, here and in particleValues alike, so
+      // the values stay aligned and neither VTK's bounds nor the camera clipping range become NaN.
       for (std::size_t s = 0; s < particles.size(); ++s)
         if (particles[s].kind() == kindOf(style->set))
-          layer.particles.insert(layer.particles.end(), particles[s].x().begin(), particles[s].x().end());
+          for (const Vec3& x : particles[s].x())
+            if (x.allFinite()) layer.particles.push_back(x);
       layer.particleRadius = r;
       layer.values = particleValues(particles, *style);
       scene.layers.push_back(std::move(layer));

@@ -27,7 +27,8 @@ public:
   Scene build(const ParticleSystem& particles, const std::string& timeName, double time);
 
   /// The values `style` colours `set` by at the particles (|f| for vectors), for the colour range over all frames;
-  /// empty without colourBy or particles.
+  /// empty without colourBy or particles. Particles without a finite position (a diverged run) are left out, as
+  /// build() leaves them out of a particle layer.
   static std::vector<double> particleValues(const ParticleSystem& particles, const SetStyle& style);
 
 private:
