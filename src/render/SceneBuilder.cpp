@@ -150,7 +150,7 @@ Scene SceneBuilder::build(const ParticleSystem& particles, const std::string& ti
     else contact_.push_back(made.grid);
     if (clips(render_, style->set)) {
       layer.cap = clipCap(made.grid, made.iso, *render_.clip);
-      const ShepardInterpolation interpolation(cloud, settings.kernelRadius * r);
+      const ShepardInterpolation interpolation(cloud, settings.kernelRadius * r, settings.where);
       for (const ParticleField& f : cloud.fields)
         if (f.name == style->colourBy) layer.capValues = magnitudes(interpolation.at(layer.cap.points, f), f.components);
     }

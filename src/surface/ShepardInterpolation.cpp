@@ -1,19 +1,34 @@
 #include "surface/ShepardInterpolation.hpp"
 
+#include "core/Error.hpp"
 #include "core/Parallel.hpp"
 #include "sph/Kernel.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <stdexcept>
 
 namespace poro {
 
-ShepardInterpolation::ShepardInterpolation(const ParticleCloud& cloud, double supportRadius)
+ShepardInterpolation::ShepardInterpolation(const ParticleCloud& cloud, double supportRadius, const std::string& where)
     : cloud_(cloud), h_(supportRadius) {
   Vec3 lo = Vec3::Constant(HUGE_VAL), hi = Vec3::Constant(-HUGE_VAL);
   for (const Vec3& p : cloud.positions)
     if (p.allFinite()) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   if (!(lo.x() <= hi.x())) return;
+  // Cells of the support radius over the particles' extent: far-flung particles (a diverged run) or a tiny support
+  // would ask for more cells than memory holds; refused before allocating, as ColourField refuses its grid.
+  double cells = 1.0;
+  for (int a = 0; a < 3; ++a) cells *= std::floor((hi[a] - lo[a]) / h_) + 1.0;
+  if (!(cells <= kMaxShepardCells)) {
+    std::ostringstream msg;
+    msg << where << ": the particles span [" << lo.transpose() << "] to [" << hi.transpose() << "], " << cells
+        << " cells of the kernel support " << h_ << " m, more than the " << kMaxShepardCells
+        << " the interpolation of their fields takes; particles this far apart are a diverged run, or raise "
+           "kernelRadius";
+    throw InputError(msg.str());
+  }
   origin_ = lo;
   for (int a = 0; a < 3; ++a)
     dims_[static_cast<std::size_t>(a)] = static_cast<std::int64_t>(std::floor((hi[a] - lo[a]) / h_)) + 1;
@@ -35,7 +50,16 @@ ShepardInterpolation::ShepardInterpolation(const ParticleCloud& cloud, double su
 }
 
 std::vector<double> ShepardInterpolation::at(const std::vector<Vec3>& points, const ParticleField& field) const {
+  // The sums live on the stack (no allocation inside the parallel loop): scalars and vectors only.
+  if (field.components < 1 || field.components > 3)
+    throw std::invalid_argument("ShepardInterpolation::at: field '" + field.name + "' has " +
+                                std::to_string(field.components) + " components; 1 to 3 are supported");
   const auto k = static_cast<std::size_t>(field.components);
+  if (field.values.size() != cloud_.positions.size() * k)
+    throw std::invalid_argument("ShepardInterpolation::at: field '" + field.name + "' has " +
+                                std::to_string(field.values.size()) + " values for " +
+                                std::to_string(cloud_.positions.size()) + " particles of " + std::to_string(k) +
+                                " components");
   std::vector<double> values(points.size() * k, 0.0);
   if (order_.empty()) return values;
   const CubicKernel kernel(h_);
@@ -54,11 +78,11 @@ std::vector<double> ShepardInterpolation::at(const std::vector<Vec3>& points, co
             const double w = cloud_.volumes[p] * kernel.w((x - cloud_.positions[p]).norm());
             if (w <= 0.0) continue;
             weights += w;
-            for (std::size_t i = 0; i < k && i < 3; ++i) sum[i] += w * field.values[p * k + i];
+            for (std::size_t i = 0; i < k; ++i) sum[i] += w * field.values[p * k + i];
           }
         }
     if (weights > 0.0)
-      for (std::size_t i = 0; i < k && i < 3; ++i) values[q * k + i] = sum[i] / weights;
+      for (std::size_t i = 0; i < k; ++i) values[q * k + i] = sum[i] / weights;
   });
   return values;
 }

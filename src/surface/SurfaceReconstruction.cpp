@@ -16,7 +16,7 @@ Reconstruction reconstruct(const ParticleCloud& cloud, const ReconstructionSetti
                             settings.where);
   result.surface = contour(result.grid, settings.isoValue, settings.smoothingIterations);
   if (result.surface.empty()) return result;
-  const ShepardInterpolation interpolation(cloud, settings.kernelRadius * particleRadius);
+  const ShepardInterpolation interpolation(cloud, settings.kernelRadius * particleRadius, settings.where);
   for (const ParticleField& f : cloud.fields)
     result.surface.fields.push_back({f.name, f.components, interpolation.at(result.surface.points, f)});
   return result;

@@ -3,10 +3,12 @@
 #include "surface/ShepardInterpolation.hpp"
 
 #include "LatticeClouds.hpp"
+#include "core/Error.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace poro {
 namespace {
@@ -31,6 +33,31 @@ TEST(ShepardInterpolation, UniformExactlyAndOtherwiseBounded) {
     EXPECT_LE(h[p], 11.0 * kR);
   }
   EXPECT_NEAR(h[0], 0.06, 1e-3); // a linear field at the lattice's centre, by symmetry
+}
+
+TEST(ShepardInterpolation, TooManyCellsAreRefusedBeforeAllocating) {
+  // Two particles a diverged run flung 1 km apart: (1000 m / 0.04 m)^3 = 1.6e13 cells of the support.
+  ParticleCloud cloud;
+  cloud.positions = {Vec3(0, 0, 0), Vec3(1000, 1000, 1000)};
+  cloud.volumes = {8e-6, 8e-6};
+  try {
+    const ShepardInterpolation interpolation(cloud, 4.0 * kR, "system/surfaceDict:3");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind("system/surfaceDict:3: the particles span", 0), 0u) << message;
+    EXPECT_NE(message.find("diverged"), std::string::npos) << message;
+  }
+}
+
+TEST(ShepardInterpolation, FieldsOfOtherWidthsAreRefusedNotTruncated) {
+  ParticleCloud cloud = test::latticeCloud(kR, 2, 2, 2, Vec3(1.0, 0.0, 0.0));
+  const ShepardInterpolation interpolation(cloud, 4.0 * kR);
+  const std::vector<Vec3> points{{0.02, 0.02, 0.02}};
+  ParticleField tensor{"stress", 9, std::vector<double>(9 * cloud.positions.size(), 1.0)};
+  EXPECT_THROW(interpolation.at(points, tensor), std::invalid_argument);
+  ParticleField short_{"saturation", 1, {1.0}};
+  EXPECT_THROW(interpolation.at(points, short_), std::invalid_argument);
 }
 
 } // namespace
