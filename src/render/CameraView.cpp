@@ -7,7 +7,7 @@
 namespace poro {
 
 CameraView CameraView::framing(const Vec3& lo, const Vec3& hi, const Vec3& gravity, double viewAngle,
-                               double aspect) {
+                               double aspect, double reservedRight) {
   const double degree = M_PI / 180.0;
   const Vec3 up = gravity.norm() > 0.0 ? Vec3(-gravity.normalized()) : Vec3(Vec3::UnitY());
   // The horizontal coordinate axis along which the box is thinnest faces the camera.
@@ -32,8 +32,10 @@ CameraView CameraView::framing(const Vec3& lo, const Vec3& hi, const Vec3& gravi
   // Each corner must lie within the view's half-angles (shrunk by the margin): with the camera at distance d along
   // towardsCamera, a corner at (right, up, towards) offsets from the focal point appears at
   // |right| / (d - towards) <= tan(horizontal half-angle), likewise upward.
+  // The box is fitted into the width left of the reserved strip, then the camera pans right by half the strip so
+  // the box is centred in what is left.
   const double margin = 0.85;
-  const double tanV = margin * std::tan(0.5 * viewAngle * degree), tanH = aspect * tanV;
+  const double tanV = margin * std::tan(0.5 * viewAngle * degree), tanH = aspect * tanV * (1.0 - reservedRight);
   const Vec3 right = up.cross(towardsCamera).normalized(), upward = towardsCamera.cross(right);
   double distance = 1e-6;
   for (int corner = 0; corner < 8; ++corner) {
@@ -44,6 +46,9 @@ CameraView CameraView::framing(const Vec3& lo, const Vec3& hi, const Vec3& gravi
                          towards + std::abs(offset.dot(upward)) / tanV});
   }
   view.position = view.focalPoint + towardsCamera * distance;
+  const Vec3 pan = right * (reservedRight * aspect * std::tan(0.5 * viewAngle * degree) * distance);
+  view.position += pan;
+  view.focalPoint += pan;
   return view;
 }
 

@@ -38,6 +38,26 @@ TEST(CameraView, FramesTheBoxWithGravityDown) {
   EXPECT_GT(widest, 0.8); // no farther than needed
 }
 
+TEST(CameraView, KeepsTheLegendsStripFree) {
+  const Vec3 lo(-0.1, 0.0, 0.0), hi(1.0, 0.1, 0.1); // a long beam, whose near end would reach the legend
+  const double aspect = 16.0 / 9.0, reserved = 0.15;
+  const CameraView view = CameraView::framing(lo, hi, Vec3(0, -9.81, 0), 30.0, aspect, reserved);
+  double left = 1.0, right = -1.0;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 p(corner & 1 ? hi.x() : lo.x(), corner & 2 ? hi.y() : lo.y(), corner & 4 ? hi.z() : lo.z());
+    const Eigen::Vector2d at = project(view, aspect, p);
+    left = std::min(left, at.x()), right = std::max(right, at.x());
+    EXPECT_LE(std::abs(at.y()), 0.86) << corner;
+  }
+  // The strip is the rightmost 15 % of the width: x > 1 - 2 * 0.15 in picture coordinates.
+  EXPECT_LE(right, 1.0 - 2.0 * reserved);
+  EXPECT_GE(left, -1.0);
+  // No farther than needed: the widest corner (the near end) fills what is left, -1 .. 1 - 2 * 0.15, up to the
+  // 0.85 margin: centre -0.15 + half-width 0.85 * 0.85 = 0.57, less what the pan, exact in the focal plane only,
+  // moves the near end further (a few hundredths here).
+  EXPECT_GT(right, 0.85 * (1.0 - reserved) - reserved - 0.05);
+}
+
 TEST(CameraView, GravityAlongZPutsZUp) {
   const CameraView view = CameraView::framing(Vec3::Zero(), Vec3::Ones(), Vec3(0, 0, -9.81), 30.0, 1.0);
   EXPECT_TRUE(view.viewUp.isApprox(Vec3::UnitZ()));
