@@ -273,6 +273,17 @@ RunState readRunState(const fs::path& timeDir) {
   return state;
 }
 
+PvdSeries seriesOfTimeDirectories(const fs::path& caseDir) {
+  PvdSeries series;
+  const std::string porous = std::string(kPorousSetName) + ".vtp";
+  for (const TimeDirectoryEntry& time : listTimeDirectories(caseDir))
+    for (const std::string& file : {std::string("fluid.vtp"), porous, std::string("boundary.vtp"),
+                                   std::string(kFluidSurfaceFile), std::string(kPorousSurfaceFile)})
+      if (fs::exists(caseDir / time.name / file))
+        series.add(time.time, fs::path(file).stem().string(), time.name + "/" + file);
+  return series;
+}
+
 ParticleSystem readParticles(const fs::path& caseDir, const std::string& name, double particleRadius,
                              const std::vector<PorousMaterial>& materials) {
   const fs::path dir = caseDir / name;

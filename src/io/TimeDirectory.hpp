@@ -48,6 +48,10 @@ RunState readRunState(const std::filesystem::path& timeDir);
 ParticleSystem readParticles(const std::filesystem::path& caseDir, const std::string& timeName, double particleRadius,
                              const std::vector<PorousMaterial>& materials);
 
+/// case.pvd as the time directories say, for a case that has lost it: every complete time directory (by time) with
+/// its particle files (fluid.vtp, porous.vtp, boundary.vtp, in that order) and the surfaces fluidSurface added.
+PvdSeries seriesOfTimeDirectories(const std::filesystem::path& caseDir);
+
 /// Cleans up after a run killed while writing: removes `.<t>.tmp` (unfinished time directories) and the
 /// `.case.pvd.tmp.<pid>` of processes that no longer run, and puts back `.<t>.old` (a time directory being
 /// replaced) where `<t>` is missing or incomplete. poroSph does this before it looks for its start time.

@@ -196,6 +196,19 @@ TEST_F(RenderCase, FluidSurfaceWritesClosedSurfacesAndListsThem) {
   EXPECT_NO_THROW(runner_.particles("1", kR));
 }
 
+TEST_F(RenderCase, FluidSurfaceRebuildsAMissingCasePvd) {
+  // Written with the surfaces alone, case.pvd would hide the particles from ParaView.
+  fs::remove(runner_.dir() / "case.pvd");
+  ASSERT_EQ(runner_.run(POROSPH_SURFACE, "-latestTime", 120), 0) << runner_.read("log.fluidSurface");
+  EXPECT_NE(runner_.read("log.fluidSurface").find("case.pvd: not found; rebuilt from the time directories"),
+            std::string::npos);
+  std::vector<std::string> files;
+  const PvdSeries series = PvdSeries::read(runner_.dir() / "case.pvd");
+  for (const auto& entry : series.entries()) files.push_back(entry.file);
+  EXPECT_EQ(files, (std::vector<std::string>{"0/fluid.vtp", "0/porous.vtp", "1/fluid.vtp", "1/porous.vtp",
+                                             "1/fluidSurface.vtp", "1/porousSurface.vtp"}));
+}
+
 // A surfaceDict whose grid would be too large: a settings error, the same at every time. It must end the run at once
 // with the file, line and key, not be taken for an unreadable time directory at every time ("none readable").
 const char* const kHugeGridSurfaceDict = "porous:\n  kernelRadius: 16\n  gridSpacing: 0.05\n";

@@ -85,7 +85,13 @@ int main(int argc, char* argv[]) try {
 
   const fs::path pvd = caseDir / "case.pvd";
   PvdSeries series;
-  if (fs::exists(pvd)) series = PvdSeries::read(pvd);
+  if (fs::exists(pvd)) {
+    series = PvdSeries::read(pvd);
+  } else { // written with the surfaces alone, it would hide the particles from ParaView
+    series = seriesOfTimeDirectories(caseDir);
+    log::warning(pvd.string() + ": not found; rebuilt from the time directories (" +
+                 std::to_string(series.entries().size()) + " files) before adding the surfaces");
+  }
   std::size_t done = 0;
   for (const TimeCandidate& time : selection.complete) {
     const Timer timer;

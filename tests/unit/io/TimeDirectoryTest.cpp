@@ -73,5 +73,34 @@ TEST(TimeDirectory, ARewrittenTimeDirectoryDropsTheEntriesOfTheFilesItLost) {
   EXPECT_TRUE(has(files, "0/fluid.vtp"));
 }
 
+TEST(TimeDirectory, ASeriesRebuiltFromTheTimeDirectoriesListsParticlesAndSurfaces) {
+  // What fluidSurface writes when case.pvd is gone: what poroSph had listed, and the surfaces already made.
+  ScratchDirectory dir;
+  const ParticleSystem ps = twoParticles();
+  TimeWriter::writeAll(dir.path(), ps, RunState{}, true);
+  {
+    TimeWriter writer(dir.path(), OutputSettings{}, "0");
+    writer.write(ps, RunState{0.5, 10, 1e-3});
+  }
+  test::writeAll(dir / (std::string("0.5/") + kFluidSurfaceFile), "surface");
+  std::filesystem::create_directories(dir / "0.7"); // no uniform/time: not a complete time directory
+  test::writeAll(dir / "0.7/fluid.vtp", "partial");
+  const std::string written = test::readAll(dir / "case.pvd");
+  std::filesystem::remove(dir / "case.pvd");
+
+  const PvdSeries series = seriesOfTimeDirectories(dir.path());
+  std::vector<std::string> files;
+  for (const auto& entry : series.entries()) files.push_back(entry.file);
+  EXPECT_EQ(files, (std::vector<std::string>{"0/fluid.vtp", "0.5/fluid.vtp", "0.5/fluidSurface.vtp"}));
+  EXPECT_EQ(series.entries()[1].time, 0.5);
+  EXPECT_EQ(series.entries()[2].part, "fluidSurface");
+  // Without the surface, the same file as poroSph wrote.
+  PvdSeries particlesOnly;
+  for (const auto& entry : series.entries())
+    if (entry.part != "fluidSurface") particlesOnly.add(entry.time, entry.part, entry.file);
+  particlesOnly.write(dir / "case.pvd");
+  EXPECT_EQ(test::readAll(dir / "case.pvd"), written);
+}
+
 } // namespace
 } // namespace poro
