@@ -5,6 +5,10 @@
 #include "render/ColourMap.hpp"
 #include "sph/ParticleSet.hpp"
 
+#include <Eigen/Geometry>
+
+#include <sstream>
+
 namespace poro {
 
 namespace {
@@ -55,6 +59,11 @@ SetStyle readStyle(const Dictionary& dict, SetStyle s) {
   } else if (s.colourBy != field::saturation) {
     s.range.reset();
   }
+  // A map or range without a field to colour by would be silently ignored.
+  for (const char* key : {"colourMap", "range"})
+    if (s.colourBy.empty() && dict.has(key))
+      dict.fail(key, std::string("given, but colourBy is none") + (dict.has("colourBy") ? "" : " (the default here)") +
+                         ", so the set is drawn in its solid colour; remove " + key + " or set colourBy");
   s.colour = dict.getVec3("colour", s.colour);
   for (int c = 0; c < 3; ++c)
     if (s.colour[c] < 0.0 || s.colour[c] > 1.0) dict.fail("colour", "expected red, green and blue in [0, 1]");
@@ -64,6 +73,16 @@ SetStyle readStyle(const Dictionary& dict, SetStyle s) {
 }
 
 } // namespace
+
+std::string viewUpProblem(const Vec3& viewUp, const Vec3& viewDirection) {
+  // Parallel within about 0.06 degrees: VTK could not tell which way is up in the picture.
+  if (viewUp.cross(viewDirection).norm() > 1e-3 * viewUp.norm() * viewDirection.norm()) return "";
+  std::ostringstream msg;
+  msg << "expected a direction not parallel to the view direction focalPoint - position = ["
+      << viewDirection.transpose() << "], got [" << viewUp.transpose()
+      << "]; viewUp is the direction that points up in the picture";
+  return msg.str();
+}
 
 RenderSettings readRenderSettings(const std::filesystem::path& caseDir, bool porousBodies) {
   RenderSettings s;
@@ -80,6 +99,9 @@ RenderSettings readRenderSettings(const std::filesystem::path& caseDir, bool por
   s.height = static_cast<int>(size[1]);
   if (s.width != size[0] || s.height != size[1]) dict.fail("imageSize", "expected whole numbers of pixels");
   s.background = dict.getVec3("background", s.background);
+  for (int c = 0; c < 3; ++c)
+    if (s.background[c] < 0.0 || s.background[c] > 1.0)
+      dict.fail("background", "expected red, green and blue in [0, 1]");
   s.frameRate = dict.getReal("frameRate", s.frameRate, Range::closed(0.1, 120.0));
   s.timeLabel = dict.getBool("timeLabel", s.timeLabel);
   s.legend = dict.getBool("legend", s.legend);
@@ -91,6 +113,11 @@ RenderSettings readRenderSettings(const std::filesystem::path& caseDir, bool por
     if (s.camera.viewUp && s.camera.viewUp->norm() == 0.0) camera->fail("viewUp", "expected a non-zero direction");
     if (s.camera.position && s.camera.focalPoint && *s.camera.position == *s.camera.focalPoint)
       camera->fail("position", "expected a position other than the focal point");
+    s.camera.viewUpWhere = camera->where("viewUp");
+    if (s.camera.viewUp && s.camera.position && s.camera.focalPoint) {
+      const std::string problem = viewUpProblem(*s.camera.viewUp, *s.camera.focalPoint - *s.camera.position);
+      if (!problem.empty()) camera->fail("viewUp", problem);
+    }
     s.camera.viewAngle = camera->getReal("viewAngle", s.camera.viewAngle, Range::open(0.0, 180.0));
     camera->checkUnknownKeys();
   }

@@ -28,6 +28,7 @@ struct SetStyle {
 struct CameraSettings {
   std::optional<Vec3> position, focalPoint, viewUp; ///< default: CameraView::framing
   double viewAngle = 30.0;                          ///< vertical [degrees]
+  std::string viewUpWhere;                          ///< "system/renderDict:9" of camera.viewUp, for viewUpProblem
 };
 
 /// A plane that cuts sets open: the half-space the normal points to is removed (point it at the camera).
@@ -51,9 +52,13 @@ struct RenderSettings {
   std::vector<const SetStyle*> styles() const { return {&boundary, &porous, &fluid}; }
 };
 
+/// Why `viewUp` cannot be the picture's up direction when looking along `viewDirection` (parallel to it), or "".
+std::string viewUpProblem(const Vec3& viewUp, const Vec3& viewDirection);
+
 /// Reads `<caseDir>/system/renderDict`, with defaults for what it leaves out. `porousBodies`: whether the case has
 /// porous bodies (the fluid is then more translucent, so they show through it). Unknown keys, wrong types, unknown
-/// colour maps and surface colours other than the surface's own field are InputErrors naming file, line and key.
+/// colour maps, surface colours other than the surface's own field, colours outside [0, 1], a colourMap or range
+/// without colourBy, and a camera viewUp parallel to its view direction are InputErrors naming file, line and key.
 RenderSettings readRenderSettings(const std::filesystem::path& caseDir, bool porousBodies);
 
 } // namespace poro

@@ -2,9 +2,17 @@
 
 #include "core/Dictionary.hpp"
 
+#include <sstream>
+
 namespace poro {
 
 namespace {
+
+std::string formatNumber(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
 
 ReconstructionSettings readReconstruction(const Dictionary& dict, const ReconstructionSettings& defaults) {
   ReconstructionSettings s = defaults;
@@ -15,6 +23,13 @@ ReconstructionSettings readReconstruction(const Dictionary& dict, const Reconstr
   s.smoothingIterations =
       static_cast<int>(dict.getInt("smoothingIterations", defaults.smoothingIterations, Range::closed(0, 200)));
   s.where = dict.where("gridSpacing");
+  // A grid coarser than the kernel's support cannot resolve c, which rises from 0 to 1 over that width: the surface
+  // would miss features and could break apart.
+  if (s.gridSpacing > s.kernelRadius)
+    dict.fail(dict.has("gridSpacing") ? "gridSpacing" : "kernelRadius",
+              "expected gridSpacing (" + formatNumber(s.gridSpacing) + ") at most kernelRadius (" +
+                  formatNumber(s.kernelRadius) + "): a grid coarser than the kernel's support cannot resolve the "
+                  "colour field");
   return s;
 }
 

@@ -149,6 +149,11 @@ int main(int argc, char* argv[]) try {
   if (settings.camera.focalPoint) camera.focalPoint = *settings.camera.focalPoint;
   if (settings.camera.position) camera.position = *settings.camera.position;
   if (settings.camera.viewUp) camera.viewUp = *settings.camera.viewUp;
+  // renderDict checks a viewUp given with position and focal point; with either taken from the default view, here.
+  if (settings.camera.viewUp) {
+    const std::string problem = viewUpProblem(camera.viewUp, camera.focalPoint - camera.position);
+    if (!problem.empty()) throw InputError(settings.camera.viewUpWhere + ": key 'camera.viewUp': " + problem);
+  }
 
   // Colour ranges fixed for the whole series: from renderDict, else over the particles of every selected time.
   std::map<std::string, std::array<double, 2>> ranges;

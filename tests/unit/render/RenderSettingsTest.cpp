@@ -89,6 +89,48 @@ TEST_F(RenderSettingsTest, ErrorsNameFileLineAndKey) {
   EXPECT_EQ(errorOf(), file() + ":2: key 'fluid.range': expected [min, max] with min < max");
 }
 
+TEST_F(RenderSettingsTest, ColoursOutsideTheUnitRangeAreRefused) {
+  write("background: [0, 0, 255]\n");
+  EXPECT_EQ(errorOf(), file() + ":1: key 'background': expected red, green and blue in [0, 1]");
+  write("background: [-0.1, 0, 0]\n");
+  EXPECT_EQ(errorOf(), file() + ":1: key 'background': expected red, green and blue in [0, 1]");
+  write("porous:\n  colour: [0, 1.5, 0]\n");
+  EXPECT_EQ(errorOf(), file() + ":2: key 'porous.colour': expected red, green and blue in [0, 1]");
+}
+
+TEST_F(RenderSettingsTest, AViewUpAlongTheViewDirectionIsRefused) {
+  write("camera:\n  position: [0, 5, 0]\n  focalPoint: [0, 1, 0]\n  viewUp: [0, 2, 0]\n");
+  EXPECT_EQ(errorOf().rfind(file() + ":4: key 'camera.viewUp': expected a direction not parallel to the view "
+                                     "direction focalPoint - position = [ 0 -4  0], got [0 2 0]",
+                            0),
+            0u)
+      << errorOf();
+  write("camera:\n  position: [0, 5, 0]\n  focalPoint: [0, 1, 0]\n  viewUp: [0, 0, 1]\n");
+  EXPECT_EQ(errorOf(), "no error");
+  // Without position or focal point the view direction is renderCase's default one, checked there.
+  write("camera:\n  viewUp: [0, 1, 0]\n");
+  const RenderSettings s = readRenderSettings(dir_, true);
+  EXPECT_EQ(s.camera.viewUpWhere, file() + ":2");
+  EXPECT_TRUE(viewUpProblem(Vec3(0, 1, 0), Vec3(0, 0, -1)).empty());
+  EXPECT_FALSE(viewUpProblem(Vec3(0, 1, 0), Vec3(0, -3, 0)).empty());
+  EXPECT_FALSE(viewUpProblem(Vec3(0, 1, 0), Vec3(1e-5, 1, 0)).empty());
+}
+
+TEST_F(RenderSettingsTest, AColourMapOrRangeWithoutColourByIsRefused) {
+  write("porous:\n  colourBy: none\n  range: [0, 0.5]\n");
+  EXPECT_EQ(errorOf().rfind(file() + ":3: key 'porous.range': given, but colourBy is none, so the set is drawn in its "
+                                     "solid colour",
+                            0),
+            0u)
+      << errorOf();
+  write("fluid:\n  colourMap: blues\n"); // the fluid's default colourBy is none
+  EXPECT_EQ(errorOf().rfind(file() + ":2: key 'fluid.colourMap': given, but colourBy is none (the default here)", 0),
+            0u)
+      << errorOf();
+  write("fluid:\n  colourBy: v\n  colourMap: blues\n  range: [0, 2]\n");
+  EXPECT_EQ(errorOf(), "no error");
+}
+
 TEST_F(RenderSettingsTest, TheTemplateReadsWithEveryKey) {
   fs::copy_file(fs::path(POROSPH_TEST_DATA) / ".." / ".." / "etc" / "caseDicts" / "renderDict",
                 dir_ / "system" / "renderDict");

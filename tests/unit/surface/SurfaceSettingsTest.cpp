@@ -69,6 +69,11 @@ TEST_F(SurfaceSettingsTest, ErrorsNameFileLineAndKey) {
   EXPECT_EQ(errorOf().rfind(file + ":2: key 'fluid.poreFluid': expected one of exclude, include, got 'keep'", 0), 0u);
   write("fluids:\n  isoValue: 0.5\n");
   EXPECT_EQ(errorOf(), file + ":1: unknown key 'fluids'; did you mean 'fluid'?");
+  write("porous:\n  kernelRadius: 3\n  gridSpacing: 4\n");
+  EXPECT_EQ(errorOf(), file + ":3: key 'porous.gridSpacing': expected gridSpacing (4) at most kernelRadius (3): a grid "
+                              "coarser than the kernel's support cannot resolve the colour field");
+  write("fluid:\n  gridSpacing: 4\n"); // kernelRadius 4 by default: as coarse as allowed
+  EXPECT_EQ(errorOf(), "no error");
 }
 
 TEST_F(SurfaceSettingsTest, TheTemplateReadsWithEveryKey) {
