@@ -264,7 +264,6 @@ void FrameRenderer::Impl::addTimeLabel(const Scene& scene) {
   label->GetTextProperty()->SetFontSize(std::max(12, settings.height / 25));
   label->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
   label->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  label->SetPosition(0.02, 0.93);
   label->GetTextProperty()->SetVerticalJustificationToTop();
   label->SetPosition(0.02, 0.97);
   renderer->AddActor2D(label);

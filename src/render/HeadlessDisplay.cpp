@@ -1,6 +1,7 @@
 #include "render/HeadlessDisplay.hpp"
 
 #include "core/Error.hpp"
+#include "render/ExecutableSearch.hpp"
 
 #include <cerrno>
 #include <cstdlib>
@@ -17,20 +18,6 @@ namespace {
 
 const char* const kMarker = "POROSPH_UNDER_XVFB";
 
-/// `name` on PATH, or "".
-std::string onPath(const std::string& name) {
-  const char* path = std::getenv("PATH");
-  std::string list = path ? path : "/usr/bin:/bin";
-  std::size_t start = 0;
-  while (start <= list.size()) {
-    const std::size_t end = std::min(list.find(':', start), list.size());
-    const std::filesystem::path candidate = std::filesystem::path(list.substr(start, end - start)) / name;
-    if (::access(candidate.c_str(), X_OK) == 0) return candidate.string();
-    start = end + 1;
-  }
-  return "";
-}
-
 } // namespace
 
 void ensureDisplay(int argc, char* argv[]) {
@@ -38,7 +25,7 @@ void ensureDisplay(int argc, char* argv[]) {
   if (display && *display) return;
   if (std::getenv(kMarker))
     throw Error("xvfb-run started no X display (DISPLAY is still unset); try: xvfb-run -a " + std::string(argv[0]));
-  const std::string xvfbRun = onPath("xvfb-run");
+  const std::string xvfbRun = findOnPath("xvfb-run");
   if (xvfbRun.empty())
     throw Error("no X display (DISPLAY is unset) and no xvfb-run: VTK renders through an X server even off screen. "
                 "Install a virtual one (apt-get install xvfb xauth; ./Allrun does) or set DISPLAY");

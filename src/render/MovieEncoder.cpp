@@ -2,6 +2,7 @@
 
 #include "core/Error.hpp"
 #include "io/AtomicFile.hpp"
+#include "render/ExecutableSearch.hpp"
 
 #include <cerrno>
 #include <csignal>
@@ -69,15 +70,7 @@ std::string readFrame(const std::filesystem::path& frame, const std::filesystem:
 
 } // namespace
 
-std::string findFfmpeg() {
-  const char* path = std::getenv("PATH");
-  std::stringstream list(path ? path : "/usr/bin:/bin");
-  for (std::string dir; std::getline(list, dir, ':');) {
-    const std::string candidate = (std::filesystem::path(dir) / "ffmpeg").string();
-    if (::access(candidate.c_str(), X_OK) == 0) return candidate;
-  }
-  return "";
-}
+std::string findFfmpeg() { return findOnPath("ffmpeg"); }
 
 void encodeMovie(const std::string& ffmpeg, const std::vector<std::filesystem::path>& frames, double frameRate,
                  const std::filesystem::path& movie) {

@@ -58,7 +58,7 @@ void writeTime(const fs::path& caseDir, double t) {
 
 class RenderCase : public ::testing::Test {
 protected:
-  RenderCase() : runner_(CaseSource{emptySource()}) {
+  RenderCase() : runner_(CaseSource{}) {
     fs::create_directories(runner_.dir() / "system");
     fs::create_directories(runner_.dir() / "constant");
     runner_.write("system/particleDict", kParticleDict);
@@ -70,16 +70,31 @@ protected:
     for (const char* part : {"fluid", "porous"}) series.add(1.0, part, std::string("1/") + part + ".vtp");
     series.write(runner_.dir() / "case.pvd"); // ... and time 1 joins it as poroSph would have written it
   }
-  static fs::path emptySource() {
-    const fs::path source = fs::temp_directory_path() / ("porosph_empty_render_case_" + std::to_string(::getpid()));
-    fs::create_directories(source);
-    return source;
-  }
   int render(const std::string& arguments) const { return runner_.run(POROSPH_RENDER, arguments, 300); }
   std::string log() const { return runner_.read("log.renderCase"); }
 
   CaseRunner runner_;
 };
+
+TEST(RenderCaseScratch, AnEmptyCaseLeavesNothingBehind) {
+  // The fixture's case starts empty; it used to be copied from an empty source directory that stayed in /tmp.
+  const auto scratch = [] {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(fs::temp_directory_path()))
+      if (entry.path().filename().string().find(std::to_string(::getpid())) != std::string::npos)
+        names.push_back(entry.path().filename().string());
+    return names;
+  };
+  const std::vector<std::string> before = scratch();
+  fs::path dir;
+  {
+    const CaseRunner runner(CaseSource{});
+    dir = runner.dir();
+    EXPECT_TRUE(fs::is_empty(dir));
+  }
+  EXPECT_FALSE(fs::exists(dir));
+  EXPECT_EQ(scratch(), before);
+}
 
 /// CIE lightness of a pixel.
 double lightness(const std::array<std::uint8_t, 3>& p) {
