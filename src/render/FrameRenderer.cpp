@@ -235,6 +235,15 @@ void FrameRenderer::Impl::addContainers(const SceneLayer& layer, const Vec3& up)
   }
 }
 
+namespace {
+// Legends stand side by side from the right edge; a title reaches about 0.04 of the width left of its bar.
+constexpr double legendLeft = 0.90, legendPitch = 0.11, legendTitleOverhang = 0.04;
+} // namespace
+
+double FrameRenderer::legendsWidth(int legends) {
+  return legends > 0 ? 1.0 - legendLeft + legendTitleOverhang + legendPitch * (legends - 1) : 0.0;
+}
+
 void FrameRenderer::Impl::addLegend(const SetStyle& style, vtkLookupTable* table, int index) {
   vtkNew<vtkScalarBarActor> bar;
   bar->SetLookupTable(table);
@@ -243,7 +252,7 @@ void FrameRenderer::Impl::addLegend(const SetStyle& style, vtkLookupTable* table
   bar->SetLabelFormat("%.3g");
   bar->SetOrientationToVertical();
   bar->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  bar->SetPosition(0.90 - 0.11 * index, 0.12);
+  bar->SetPosition(legendLeft - legendPitch * index, 0.12);
   bar->SetWidth(0.09);
   bar->SetHeight(0.76);
   bar->SetBarRatio(0.3);

@@ -24,6 +24,10 @@ public:
   /// Draws `scene` with a time label and colour legends and writes it as an RGB PNG. Throws OutputError.
   void render(const Scene& scene, const std::filesystem::path& png);
 
+  /// The share of the picture's width, at its right, that `legends` colour legends and their titles take (0 for
+  /// none), for a camera that keeps it free.
+  static double legendsWidth(int legends);
+
 private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

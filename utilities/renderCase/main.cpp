@@ -144,8 +144,12 @@ int main(int argc, char* argv[]) try {
   framedBox({&first, &last}, lo, hi);
   RenderSettings settings = readRenderSettings(caseDir, hasKind(first, SetKind::Porous));
   applySize(args, settings);
+  int legends = 0;
+  for (const SetStyle* style : settings.styles())
+    if (settings.legend && !style->colourBy.empty() && style->show != SetStyle::Show::None) ++legends;
   CameraView camera = CameraView::framing(lo, hi, analysis.gravity, settings.camera.viewAngle,
-                                           double(settings.width) / double(settings.height));
+                                           double(settings.width) / double(settings.height),
+                                           FrameRenderer::legendsWidth(legends));
   if (settings.camera.focalPoint) camera.focalPoint = *settings.camera.focalPoint;
   if (settings.camera.position) camera.position = *settings.camera.position;
   if (settings.camera.viewUp) camera.viewUp = *settings.camera.viewUp;
