@@ -57,18 +57,25 @@ private:
   std::unordered_map<std::uint64_t, std::vector<Solid>> cells_;
 };
 
-} // namespace
+/// Round-off in the sampled lattice (min + r + 2r k) must not decide whether a particle on a face is inside.
+double insideDistance(double particleRadius) { return particleRadius * (1.0 + 1e-9); }
 
-std::vector<std::size_t> countAbsorbedFluid(const std::vector<Vec3>& fluid, const ParticleSystem& particles,
-                                            const std::vector<PorousObject>& objects, double particleRadius) {
-  // Round-off in the sampled lattice (min + r + 2r k) must not decide whether a particle on a face is inside.
-  const double r = particleRadius * (1.0 + 1e-9);
+SolidCells cellsOf(const ParticleSystem& particles, const std::vector<PorousObject>& objects, double particleRadius) {
   SolidCells cells(2.0 * particleRadius);
   for (std::size_t k = 0; k < objects.size(); ++k)
     for (const auto& [set, i] : objects[k].particles) {
       const Vec3& x = particles[set].x()[i];
       if (x.allFinite()) cells.insert(x, k);
     }
+  return cells;
+}
+
+} // namespace
+
+std::vector<std::size_t> countAbsorbedFluid(const std::vector<Vec3>& fluid, const ParticleSystem& particles,
+                                            const std::vector<PorousObject>& objects, double particleRadius) {
+  const double r = insideDistance(particleRadius);
+  const SolidCells cells = cellsOf(particles, objects, particleRadius);
 
   std::vector<std::size_t> counts(objects.size(), 0);
   std::vector<std::size_t> lastCounted(objects.size(), fluid.size()); // the fluid particle an object last counted
@@ -81,6 +88,16 @@ std::vector<std::size_t> countAbsorbedFluid(const std::vector<Vec3>& fluid, cons
     });
   }
   return counts;
+}
+
+std::vector<bool> absorbedFluid(const std::vector<Vec3>& fluid, const ParticleSystem& particles,
+                                const std::vector<PorousObject>& objects, double particleRadius) {
+  const double r = insideDistance(particleRadius);
+  const SolidCells cells = cellsOf(particles, objects, particleRadius);
+  std::vector<bool> inside(fluid.size(), false);
+  for (std::size_t f = 0; f < fluid.size(); ++f)
+    if (fluid[f].allFinite()) cells.forEachContaining(fluid[f], r, [&](std::size_t) { inside[f] = true; });
+  return inside;
 }
 
 } // namespace poro

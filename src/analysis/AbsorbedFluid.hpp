@@ -16,4 +16,9 @@ namespace poro {
 std::vector<std::size_t> countAbsorbedFluid(const std::vector<Vec3>& fluid, const ParticleSystem& particles,
                                             const std::vector<PorousObject>& objects, double particleRadius);
 
+/// For each fluid particle at `fluid`, whether it lies inside any of the objects (the same test): the pore fluid,
+/// which fluidSurface leaves out of the free surface.
+std::vector<bool> absorbedFluid(const std::vector<Vec3>& fluid, const ParticleSystem& particles,
+                                const std::vector<PorousObject>& objects, double particleRadius);
+
 } // namespace poro

@@ -1,6 +1,7 @@
 #include "analysis/TimeSelection.hpp"
 
 #include "core/Error.hpp"
+#include "core/Log.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -168,6 +169,24 @@ TimeSelection selectTimes(const std::vector<TimeCandidate>& candidates, const st
     throw InputError(message + "\nTime directories that can be read: " + describeTimes(candidates));
   }
   return selection;
+}
+
+std::vector<Arguments::Option> timeOptions(const std::string& verb) {
+  return {{"time", "RANGES", "times to " + verb + ": 0.5 | 0.5:2 | :1 | 2: (inclusive) | a comma-separated list (default: all)"},
+          {"latestTime", "", verb + " the latest time directory (with -time: in addition)"}};
+}
+
+TimeSelection selectTimes(const Arguments& args, const fs::path& caseDir) {
+  std::optional<TimeSelector> selector;
+  if (args.has("time")) selector = TimeSelector::parse(args.value("time"));
+  TimeSelection selection = selectTimes(scanTimeDirectories(caseDir), selector, args.has("latestTime"), caseDir);
+  for (const std::string& warning : selection.warnings) log::warning(warning);
+  return selection;
+}
+
+InputError noneReadable(const fs::path& caseDir, std::size_t selected) {
+  return InputError(caseDir.string() + ": none of the " + std::to_string(selected) +
+                    " selected time directories could be read (see the warnings above)");
 }
 
 } // namespace poro

@@ -3,6 +3,9 @@
 /// `-time` with a comma-separated list of times and ranges ("0.5", "0.5:2", ":1", "2:", "0,0.5:1").
 /// Unlike io's listTimeDirectories it also sees the directories it cannot read, so they can be named.
 
+#include "core/Arguments.hpp"
+#include "core/Error.hpp"
+
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -53,5 +56,12 @@ struct TimeSelection {
 /// Throws InputError when nothing complete is selected; `caseDir` and the available times are named.
 TimeSelection selectTimes(const std::vector<TimeCandidate>& candidates, const std::optional<TimeSelector>& selector,
                           bool latestTime, const std::filesystem::path& caseDir);
+
+/// The -time and -latestTime options of a post-processing utility; `verb` says what it does with a time ("analyse").
+std::vector<Arguments::Option> timeOptions(const std::string& verb);
+/// selectTimes for a utility's -time and -latestTime (timeOptions), its warnings logged.
+TimeSelection selectTimes(const Arguments& args, const std::filesystem::path& caseDir);
+/// The InputError of a utility that could read none of the `selected` time directories (each named in a warning).
+InputError noneReadable(const std::filesystem::path& caseDir, std::size_t selected);
 
 } // namespace poro

@@ -526,6 +526,18 @@ Vec3 Dictionary::getVec3(const std::string& key, const Vec3& fallback) const {
   return e ? impl_->toVec3(*e, e->value) : fallback;
 }
 
+std::vector<double> Dictionary::getReals(const std::string& key, std::size_t count,
+                                         const std::vector<double>& fallback, const Range& range) const {
+  const auto e = impl_->optional(key);
+  if (!e) return fallback;
+  const std::string expected = "a sequence of " + std::to_string(count) + " numbers";
+  if (!e->value.IsSequence() || e->value.size() != count) impl_->failValue(*e, e->value, expected);
+  std::vector<double> out;
+  for (std::size_t i = 0; i < count; ++i)
+    out.push_back(impl_->toReal(*e, e->value[i], range, " as item " + std::to_string(i + 1) + " of " + expected));
+  return out;
+}
+
 std::vector<std::string> Dictionary::getWordList(const std::string& key, const std::vector<std::string>& choices) const {
   const auto e = impl_->optional(key);
   std::vector<std::string> out;

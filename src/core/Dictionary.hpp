@@ -79,6 +79,9 @@ public:
   /// A 3-vector written as a YAML sequence [x, y, z].
   Vec3 getVec3(const std::string& key) const;
   Vec3 getVec3(const std::string& key, const Vec3& fallback) const;
+  /// An optional sequence of exactly `count` numbers in `range`, e.g. `range: [0, 1]` (`fallback` when absent).
+  std::vector<double> getReals(const std::string& key, std::size_t count, const std::vector<double>& fallback,
+                               const Range& range = Range::any()) const;
 
   /// Required / optional sub-mapping. Sub-dictionaries share the set of known keys with their parent
   /// path prefix ("pressure.maxIterations").

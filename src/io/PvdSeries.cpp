@@ -119,9 +119,18 @@ void PvdSeries::removeTime(const std::string& timeName) {
                  entries_.end());
 }
 
+void PvdSeries::removeMissingFiles(double time, const fs::path& baseDir) {
+  entries_.erase(std::remove_if(entries_.begin(), entries_.end(),
+                                [&](const Entry& e) {
+                                  std::error_code ec;
+                                  return e.time == time && !fs::exists(baseDir / e.file, ec);
+                                }),
+                 entries_.end());
+}
+
 void PvdSeries::write(const fs::path& path) const {
-  // Parts in order of first appearance (their pvd part index) and, per part, its entries by time: a part
-  // without an entry at some time shows its latest earlier file there.
+  // Parts in order of first appearance (their pvd part index) and, per part, its entries by time: a static
+  // part shows its one file at every later time.
   std::vector<std::string> parts;
   std::vector<double> times; // in order of first appearance
   std::map<std::string, std::map<double, std::string>> filesOf;
@@ -130,6 +139,12 @@ void PvdSeries::write(const fs::path& path) const {
     if (std::find(times.begin(), times.end(), entry.time) == times.end()) times.push_back(entry.time);
     filesOf[entry.part][entry.time] = entry.file;
   }
+  const double first = times.empty() ? 0.0 : *std::min_element(times.begin(), times.end());
+  // Only the walls are written once for the whole run; a surface fluidSurface made at the first time (or any
+  // other set with one file there) belongs to that time alone.
+  const auto isStatic = [&](const std::string& part, const std::map<double, std::string>& files) {
+    return part == kStaticPart && files.size() == 1 && files.begin()->first == first;
+  };
   std::ostringstream out;
   out << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"Collection\" version=\"0.1\">\n"
@@ -140,6 +155,7 @@ void PvdSeries::write(const fs::path& path) const {
       auto latest = files.upper_bound(time);
       if (latest == files.begin()) continue; // the part does not exist yet
       --latest;
+      if (latest->first != time && !isStatic(parts[index], files)) continue; // no file of this time
       out << "    <DataSet timestep=\"" << formatTime(time) << "\" group=\"\" part=\"" << index << "\" name=\""
           << escapeXml(parts[index]) << "\" file=\"" << escapeXml(latest->second) << "\"/>\n";
     }

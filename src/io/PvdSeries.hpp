@@ -9,6 +9,9 @@
 
 namespace poro {
 
+/// The one part that may be static: the walls sampleParticles writes once into 0/boundary.vtp.
+inline constexpr const char* kStaticPart = "boundary";
+
 class PvdSeries {
 public:
   struct Entry {
@@ -30,12 +33,18 @@ public:
   /// Drops the entries whose file lies in the time directory `timeName` (e.g. "0.1"; purgeWrite).
   void removeTime(const std::string& timeName);
 
+  /// Drops the entries of exactly this time value whose file (relative to `baseDir`, the directory of the .pvd)
+  /// does not exist: after a time directory is rewritten, the surfaces fluidSurface had added to it are gone.
+  void removeMissingFiles(double time, const std::filesystem::path& baseDir);
+
   /// Writes the collection atomically (writeFileAtomically): per time (in order of first appearance) one
   /// `<DataSet timestep=".." group="" part="k" name="<part>" file=".."/>` per part, times with 17 significant
-  /// digits, part indices 0, 1, ... in order of first appearance of each part name. A part without an entry
-  /// at a time (a static set such as the boundary, written once at time 0) is listed there with its latest
-  /// earlier file: ParaView's reader shows only the files of the current time, so every set stays visible
-  /// and keeps its block index and name. Throws OutputError.
+  /// digits, part indices 0, 1, ... in order of first appearance of each part name. The static set (the part
+  /// kStaticPart with a single file, at the series' first time: the boundary sampleParticles writes once into 0/)
+  /// is listed at every time with that file: ParaView's reader shows only the files of the current time, so the
+  /// set stays visible and keeps its block index and name. Any other part is listed only at the times it has a
+  /// file, so a surface that fluidSurface made for some times (also only for the first) never shows at others.
+  /// Throws OutputError.
   void write(const std::filesystem::path& path) const;
 
   /// Reads a collection written by write() (or by ParaView): the DataSet elements' timestep and file

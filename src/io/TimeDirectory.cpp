@@ -273,6 +273,17 @@ RunState readRunState(const fs::path& timeDir) {
   return state;
 }
 
+PvdSeries seriesOfTimeDirectories(const fs::path& caseDir) {
+  PvdSeries series;
+  const std::string porous = std::string(kPorousSetName) + ".vtp";
+  for (const TimeDirectoryEntry& time : listTimeDirectories(caseDir))
+    for (const std::string& file : {std::string("fluid.vtp"), porous, std::string("boundary.vtp"),
+                                   std::string(kFluidSurfaceFile), std::string(kPorousSurfaceFile)})
+      if (fs::exists(caseDir / time.name / file))
+        series.add(time.time, fs::path(file).stem().string(), time.name + "/" + file);
+  return series;
+}
+
 ParticleSystem readParticles(const fs::path& caseDir, const std::string& name, double particleRadius,
                              const std::vector<PorousMaterial>& materials) {
   const fs::path dir = caseDir / name;
@@ -280,6 +291,8 @@ ParticleSystem readParticles(const fs::path& caseDir, const std::string& name, d
   std::vector<fs::path> files;
   for (const auto& entry : fs::directory_iterator(dir)) {
     if (entry.path().extension() != ".vtp") continue;
+    const std::string file = entry.path().filename().string();
+    if (file == kFluidSurfaceFile || file == kPorousSurfaceFile) continue; // derived, not particles
     // Anything else would be silently left out of the run (e.g. a porous set of an older layout, sand.vtp).
     if (!isParticleFile(entry.path()))
       throw InputError(entry.path().string() +
@@ -351,6 +364,8 @@ void TimeWriter::write(const ParticleSystem& particles, const RunState& state) {
     writeRunState(dir, state, particles.particleRadius());
     writeSamplingRecord(dir, samplingRecord_);
   });
+  // A rewritten directory (a run again from 0 replaces 0/) has lost the surfaces fluidSurface added to the old one.
+  series_.removeMissingFiles(state.time, caseDir_);
   for (const std::string& part : parts) series_.add(state.time, part, name + "/" + part + ".vtp");
   if (settings_.purgeWrite > 0) purge();
   series_.write(caseDir_ / kPvdName);

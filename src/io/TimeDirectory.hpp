@@ -16,6 +16,11 @@
 
 namespace poro {
 
+/// Surfaces that utilities/fluidSurface adds to a time directory (and to case.pvd, named by their stem). They are
+/// derived from the particles, so readParticles skips them and a restart is unaffected by them.
+inline constexpr const char* kFluidSurfaceFile = "fluidSurface.vtp";
+inline constexpr const char* kPorousSurfaceFile = "porousSurface.vtp";
+
 /// The directory name of a time value: shortest decimal that reads back within 1e-10 relative ("0.1", "2.5").
 std::string timeName(double time);
 
@@ -34,14 +39,18 @@ RunState readRunState(const std::filesystem::path& timeDir);
 /// Loads every particle set of a time directory: `fluid.vtp`, `porous.vtp` and `boundary.vtp` (or
 /// `0/boundary.vtp` when the directory has no boundary of its own), in ParticleSystem order. `fluid` and
 /// `boundary` name the fluid and wall sets; porous.vtp is split by its materialId into one set per material
-/// of `materials` (constant/porosityProperties order), named after the material (splitPorousSet). Any other
-/// .vtp file in the directory, a missing fluid.vtp and a porous.vtp the materials cannot split are InputErrors,
+/// of `materials` (constant/porosityProperties order), named after the material (splitPorousSet). The surfaces
+/// above are skipped; any other .vtp file in the directory, a missing fluid.vtp and a porous.vtp the materials cannot split are InputErrors,
 /// and so are a file without the array 'id' or with two particles of the same id, a `particleRadius` other than
 /// the one uniform/time records, when the case has a readable system/particleDict, a missing file of a phase its
 /// regions sample (a deleted boundary.vtp or porous.vtp), and a materialId that names another material than the one
 /// uniform/sampling records it was sampled as (checkSampledMaterials).
 ParticleSystem readParticles(const std::filesystem::path& caseDir, const std::string& timeName, double particleRadius,
                              const std::vector<PorousMaterial>& materials);
+
+/// case.pvd as the time directories say, for a case that has lost it: every complete time directory (by time) with
+/// its particle files (fluid.vtp, porous.vtp, boundary.vtp, in that order) and the surfaces fluidSurface added.
+PvdSeries seriesOfTimeDirectories(const std::filesystem::path& caseDir);
 
 /// Cleans up after a run killed while writing: removes `.<t>.tmp` (unfinished time directories) and the
 /// `.case.pvd.tmp.<pid>` of processes that no longer run, and puts back `.<t>.old` (a time directory being
@@ -56,7 +65,8 @@ public:
 
   /// Writes `<t>/` for the dynamic sets (fluid.vtp, porous.vtp), with moving walls or at step 0 also boundary.vtp, and
   /// uniform/time (and uniform/sampling when the start time directory has it), atomically, then case.pvd (one part
-  /// per file: "fluid", "porous", "boundary") and purgeWrite.
+  /// per file: "fluid", "porous", "boundary") and purgeWrite. When `<t>/` existed (a run again from 0 rewrites 0/),
+  /// case.pvd's entries of t whose files the rewrite removed (fluidSurface.vtp, porousSurface.vtp) are dropped.
   void write(const ParticleSystem& particles, const RunState& state);
   /// Walls move (prescribed motion): every time directory gets boundary.vtp, which a restart reads back.
   void setMovingWalls(bool moving) { movingWalls_ = moving; }

@@ -38,7 +38,8 @@ public:
   explicit CaseRunner(const std::string& tutorial, std::string name = "")
       : CaseRunner(CaseSource{std::filesystem::path(POROSPH_TUTORIALS) / tutorial, true}, std::move(name)) {}
 
-  /// Copies any case directory (e.g. the base of tests/data/bad) the same way.
+  /// Copies any case directory (e.g. the base of tests/data/bad) the same way; a CaseSource without a directory
+  /// gives an empty case for the test to write.
   explicit CaseRunner(const CaseSource& source, std::string name = "") {
     if (const auto* info = ::testing::UnitTest::GetInstance()->current_test_info())
       name = std::string(info->test_suite_name()) + "_" + info->name();
@@ -49,6 +50,7 @@ public:
            ("porosph_" + name + "_" + std::to_string(::getpid()) + "_" + std::to_string(++created));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
+    if (source.dir.empty()) return;
     if (!source.inputsOnly) {
       std::filesystem::copy(source.dir, dir_, std::filesystem::copy_options::recursive);
       return;

@@ -92,11 +92,13 @@ int main(int argc, char* argv[]) try {
       "volume and mass, pore filling, saturation statistics, the wet region and saturation profiles along an\n"
       "axis, and the fluid's density error, kinetic energy and momentum, as CSV and SVG plots to\n"
       "postProcessing/saturationAnalysis/.",
-      {{"time", "RANGES",
-        "times to analyse: 0.5 | 0.5:2 | :1 | 2: (inclusive) | a comma-separated list (default: all)"},
-       {"latestTime", "", "analyse the latest time directory (with -time: in addition)"},
-       {"axis", "AXIS", "x, y, z, -x, -y or -z: direction of fronts and profiles (default: against gravity)"},
-       {"wetThreshold", "S", "a porous particle with saturation >= S is wet (default 0.5)"}});
+      [] {
+        auto options = timeOptions("analyse");
+        options.push_back(
+            {"axis", "AXIS", "x, y, z, -x, -y or -z: direction of fronts and profiles (default: against gravity)"});
+        options.push_back({"wetThreshold", "S", "a porous particle with saturation >= S is wet (default 0.5)"});
+        return options;
+      }());
   if (args.help()) {
     std::cout << args.usage() << kDefinitions;
     return 0;
@@ -107,10 +109,7 @@ int main(int argc, char* argv[]) try {
   AnalysisSettings settings = readAnalysisSettings(caseDir);
   if (args.has("axis")) settings.axis = Axis::parse(args.value("axis"));
   settings.wetThreshold = wetThreshold(args);
-  std::optional<TimeSelector> selector;
-  if (args.has("time")) selector = TimeSelector::parse(args.value("time"));
-  const TimeSelection selection = selectTimes(scanTimeDirectories(caseDir), selector, args.has("latestTime"), caseDir);
-  for (const std::string& warning : selection.warnings) log::warning(warning);
+  const TimeSelection selection = selectTimes(args, caseDir);
   std::ostringstream banner;
   banner << "Case: " << caseDir.string() << "\nAxis: " << settings.axis.name() << ", wet threshold "
          << settings.wetThreshold << "\nTimes: " << selection.complete.size();
@@ -125,9 +124,7 @@ int main(int argc, char* argv[]) try {
       log::warning((caseDir / time.name).string() + ": cannot be read; skipped:\n    " + e.what());
     }
   }
-  if (records.empty())
-    throw InputError(caseDir.string() + ": none of the " + std::to_string(selection.complete.size()) +
-                     " selected time directories could be read (see the warnings above)");
+  if (records.empty()) throw noneReadable(caseDir, selection.complete.size());
 
   const auto files = writeSaturationReport(records, settings, caseDir / "postProcessing" / "saturationAnalysis");
   std::ostringstream done;

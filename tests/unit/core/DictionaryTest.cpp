@@ -297,6 +297,16 @@ TEST(Dictionary, Vec3NeedsExactlyThreeFiniteNumbers) {
             kFile + ":8: key 'e': expected a sequence [x, y, z] of 3 finite numbers, got a mapping");
 }
 
+TEST(Dictionary, RealsNeedExactlyTheirCountInRange) {
+  const auto d = parse("range: [0, 1]\nsize: [640]\nbad: [1, -2]\n");
+  EXPECT_EQ(d.getReals("range", 2, {5, 6}), (std::vector<double>{0, 1}));
+  EXPECT_EQ(d.getReals("absent", 2, {5, 6}), (std::vector<double>{5, 6}));
+  EXPECT_EQ(errorOf([&] { d.getReals("size", 2, {}); }),
+            kFile + ":2: key 'size': expected a sequence of 2 numbers, got a sequence of 1 element");
+  EXPECT_EQ(errorOf([&] { d.getReals("bad", 2, {}, Range::positive()); }),
+            kFile + ":3: key 'bad': expected a number > 0 as item 2 of a sequence of 2 numbers, got '-2'");
+}
+
 // --- ranges, NaN, inf, integers ------------------------------------------------------------------
 
 TEST(Dictionary, OutOfRangeNamesFileLineKeyValueAndRange) {

@@ -201,6 +201,19 @@ TEST(PorousSets, TimeWriterWritesOnePorousFileAndPart) {
   for (std::size_t s = 0; s < ps.size(); ++s) expectSameSet(ps[s], read[s]);
 }
 
+TEST(PorousSets, SurfacesInATimeDirectoryAreNotParticles) {
+  // fluidSurface adds them; a restart and the analysis read the same particles as without them.
+  ScratchDirectory dir;
+  std::mt19937_64 random(5);
+  const ParticleSystem ps = makeSystem(random);
+  TimeWriter::writeAll(dir.path(), ps, RunState{}, true);
+  for (const char* surface : {kFluidSurfaceFile, kPorousSurfaceFile})
+    std::filesystem::copy_file(dir / "0/fluid.vtp", dir / "0" / surface);
+  const ParticleSystem read = readParticles(dir.path(), "0", kRadius, materials({"a", "b"}));
+  ASSERT_EQ(read.size(), ps.size());
+  for (std::size_t s = 0; s < ps.size(); ++s) expectSameSet(ps[s], read[s]);
+}
+
 /// The message of the InputError `f` throws; a test failure if it throws nothing.
 template <class F> std::string errorOf(F&& f) {
   try {

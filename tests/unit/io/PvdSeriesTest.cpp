@@ -77,6 +77,47 @@ TEST(PvdSeries, AStaticSetIsListedAtEveryTime) {
   EXPECT_FALSE(contains(readAll(dir / "purged.pvd"), "boundary"));
 }
 
+TEST(PvdSeries, ASurfaceOfSomeTimesIsListedOnlyThere) {
+  // fluidSurface run with -time 0.5 (or before the run went on): a surface must not stand in for later times.
+  ScratchDirectory dir;
+  PvdSeries series;
+  series.add(0.0, "boundary", "0/boundary.vtp");
+  for (const char* name : {"0", "0.5", "1"}) series.add(std::stod(name), "fluid", std::string(name) + "/fluid.vtp");
+  series.add(0.5, "fluidSurface", "0.5/fluidSurface.vtp");
+  series.write(dir / "case.pvd");
+  const std::string text = readAll(dir / "case.pvd");
+  EXPECT_TRUE(contains(text, "timestep=\"0.5\" group=\"\" part=\"2\" name=\"fluidSurface\""));
+  EXPECT_FALSE(contains(text, "timestep=\"1\" group=\"\" part=\"2\""));
+  EXPECT_TRUE(contains(text, "timestep=\"1\" group=\"\" part=\"0\" name=\"boundary\" file=\"0/boundary.vtp\""));
+  // Read back and written again (a restart of the solver): still only at 0.5.
+  PvdSeries::read(dir / "case.pvd").write(dir / "again.pvd");
+  EXPECT_EQ(readAll(dir / "again.pvd"), text);
+}
+
+TEST(PvdSeries, ASurfaceAtTheFirstTimeIsNotStatic) {
+  // fluidSurface -time 0: the surface of the start has one file, at the series' first time, like the walls; it
+  // must not stand in for the fluid's surface at every later time.
+  ScratchDirectory dir;
+  PvdSeries series;
+  series.add(0.0, "boundary", "0/boundary.vtp");
+  for (const char* name : {"0", "0.5", "1"}) series.add(std::stod(name), "fluid", std::string(name) + "/fluid.vtp");
+  series.add(0.0, "fluidSurface", "0/fluidSurface.vtp");
+  series.add(0.0, "porousSurface", "0/porousSurface.vtp");
+  series.write(dir / "case.pvd");
+  const std::string text = readAll(dir / "case.pvd");
+  EXPECT_TRUE(contains(text, "timestep=\"0\" group=\"\" part=\"2\" name=\"fluidSurface\""));
+  EXPECT_TRUE(contains(text, "timestep=\"0\" group=\"\" part=\"3\" name=\"porousSurface\""));
+  for (const char* later : {"0.5", "1"}) {
+    EXPECT_FALSE(contains(text, "timestep=\"" + std::string(later) + "\" group=\"\" part=\"2\"")) << later;
+    EXPECT_FALSE(contains(text, "timestep=\"" + std::string(later) + "\" group=\"\" part=\"3\"")) << later;
+    EXPECT_TRUE(contains(text, "timestep=\"" + std::string(later) +
+                                   "\" group=\"\" part=\"0\" name=\"boundary\" file=\"0/boundary.vtp\""))
+        << later;
+  }
+  PvdSeries::read(dir / "case.pvd").write(dir / "again.pvd");
+  EXPECT_EQ(readAll(dir / "again.pvd"), text);
+}
+
 TEST(PvdSeries, ReadReturnsWhatWasWritten) {
   ScratchDirectory dir;
   PvdSeries written = threeTimes();
