@@ -209,8 +209,8 @@ void Solver::placeWalls(double t, double deltaT) {
 std::vector<Domain> Solver::sweptByRotatingWalls() const {
   // Each particle of a rotating body runs on a circle about the axis (through the origin carried by the current
   // displacement): the box of that circle is its centre +- radius sqrt(1 - a_i^2) along axis i. Whatever angles
-  // the motion reaches, the domain holds every place the body can turn to, so a turning paddle does not make the
-  // health check remove the fluid it carries near the tank's corners.
+  // the motion reaches, the domain holds every place the body can turn to (an arm that turns up out of its tank,
+  // fluid it carries there), and it does not depend on the angle a run starts at.
   std::vector<Domain> swept;
   for (const ObjectMotion& m : wallMotions_) {
     if (!m.motion.rotates()) continue;

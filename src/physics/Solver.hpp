@@ -26,7 +26,7 @@ struct StepReport {
   double deltaT = 0.0;
   PressureStats pressure;
   linalg::CgResult implicit;
-  double maxSpeed = 0.0;
+  double maxSpeed = 0.0; ///< largest particle speed, or prescribed wall speed within the next step [m/s]
   double maxFluidDensity = 0.0; ///< largest fluid rho~ = rho^/rho_f^0 at the start of the step (Eq. 4)
   double maxPoreFluidDensity = 0.0; ///< the same over fluid particles with porous neighbours
 };
