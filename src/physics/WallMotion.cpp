@@ -77,8 +77,7 @@ WallMotion WallMotion::read(const Dictionary& motion) {
 
   // The table form: a rotation when axis is given (with origin), then every row has an angle.
   for (const char* key : {"startTime", "endTime"})
-    if (motion.has(key))
-      motion.fail(key, "belongs to the velocity form; a table's times say when the wall moves");
+    if (motion.has(key)) motion.fail(key, "belongs to the velocity form; a table's times say when the wall moves");
   const bool rotates = motion.has("axis");
   if (motion.has("origin") != rotates)
     motion.fail(rotates ? "axis" : "origin",

@@ -36,9 +36,9 @@ class Dictionary;
 class WallMotion {
 public:
   struct Point {
-    double time = 0.0; ///< [s]
+    double time = 0.0;                ///< [s]
     Vec3 displacement = Vec3::Zero(); ///< from the sampled position [m]
-    double angle = 0.0; ///< about the axis, right-handed [rad]
+    double angle = 0.0;               ///< about the axis, right-handed [rad]
   };
 
   /// Where the motion puts the body at one time: x = origin + displacement + rotation (X - origin).

@@ -119,7 +119,7 @@ TEST(WallMotion, RotationTableIsInterpolatedLinearlyAndHeldAfterItsEnd) {
   expectVec(m.position(X, 3.0), Vec3(0.5 + 0.2 * std::cos(0.5), 0.1, 0.5 - 0.2 * std::sin(0.5)), 1e-15);
   EXPECT_DOUBLE_EQ(m.maxSpeed(0.2), 1.5 * 0.2);
   EXPECT_DOUBLE_EQ(m.maxSpeed(0.2, 2.5, 3.0), 1.0 * 0.2); // only the second piece
-  EXPECT_DOUBLE_EQ(m.maxSpeed(0.2, 5.0, 6.0), 0.0);      // held after the end
+  EXPECT_DOUBLE_EQ(m.maxSpeed(0.2, 5.0, 6.0), 0.0);       // held after the end
 }
 
 TEST(WallMotion, RotationAndTranslationTogetherCarryTheAxisAlong) {
@@ -211,8 +211,8 @@ TEST(WallMotion, BadRotationNamesFileLineKeyAndWhatWasExpected) {
   expectError("axis: [0, 0, 1]\n" + table, "system/particleDict:1: key 'axis'", "expected origin");
   expectError("origin: [0, 0, 0]\ntable:\n  - {time: 0, displacement: [0, 0, 0]}\n",
               "system/particleDict:1: key 'origin'", "give axis");
-  expectError("table:\n  - {time: 0, displacement: [0, 0, 0], angle: 1}\n", "system/particleDict:2: key 'table[0].angle'",
-              "needs axis");
+  expectError("table:\n  - {time: 0, displacement: [0, 0, 0], angle: 1}\n",
+              "system/particleDict:2: key 'table[0].angle'", "needs axis");
   expectError("angularVelocity: [0, 0, 1]\norigin: [0, 0, 0]\n" + table, "key 'angularVelocity'", "not both");
   expectError("angularVelocity: [0, 0, 1]\n", "system/particleDict:1", "missing required key 'origin'");
   expectError("angularVelocity: [0, 0, 1]\norigin: [0, 0, 0]\naxis: [0, 0, 1]\n", "system/particleDict:3: key 'axis'",
@@ -227,8 +227,8 @@ TEST(WallMotion, BadRotationNamesFileLineKeyAndWhatWasExpected) {
               "did you mean 'endTime'");
   expectError("velocity: [0, 0, 1]\nangularvelocity: [0, 0, 1]\n", "system/particleDict:2",
               "did you mean 'angularVelocity'");
-  expectError("axis: [0, 0, 1]\norigin: [0, 0, 0]\ntable:\n  - {time: 0, angle: 0, spin: 1}\n",
-              "system/particleDict:4", "unknown key 'table[0].spin'");
+  expectError("axis: [0, 0, 1]\norigin: [0, 0, 0]\ntable:\n  - {time: 0, angle: 0, spin: 1}\n", "system/particleDict:4",
+              "unknown key 'table[0].spin'");
   // A zero angular velocity does not turn (and needs no axis).
   EXPECT_FALSE(parse("angularVelocity: [0, 0, 0]\norigin: [0, 0, 0]\n").rotates());
 }
@@ -360,11 +360,11 @@ ParticleSystem paddleTank() {
   ParticleSet& walls = ps.add("boundary", SetKind::Boundary);
   const double g = kGap, t = 4 * kR;
   append(walls, sampleBox(Vec3(-t - g, -t - g, -t - g), Vec3(0.3 + t + g, -g, 0.3 + t + g), kR), 0, id); // floor
-  append(walls, sampleBox(Vec3(-t - g, -g, -t - g), Vec3(-g, 0.15, 0.3 + t + g), kR), 0, id);         // xMin
-  append(walls, sampleBox(Vec3(0.3 + g, -g, -t - g), Vec3(0.3 + t + g, 0.15, 0.3 + t + g), kR), 0, id); // xMax
-  append(walls, sampleBox(Vec3(-g, -g, -t - g), Vec3(0.3 + g, 0.15, -g), kR), 0, id);                 // zMin
-  append(walls, sampleBox(Vec3(-g, -g, 0.3 + g), Vec3(0.3 + g, 0.15, 0.3 + t + g), kR), 0, id);       // zMax
-  append(walls, sampleBox(Vec3(0.08, 0.02, 0.13), Vec3(0.22, 0.12, 0.17), kR), 1, id);                // paddle
+  append(walls, sampleBox(Vec3(-t - g, -g, -t - g), Vec3(-g, 0.15, 0.3 + t + g), kR), 0, id);            // xMin
+  append(walls, sampleBox(Vec3(0.3 + g, -g, -t - g), Vec3(0.3 + t + g, 0.15, 0.3 + t + g), kR), 0, id);  // xMax
+  append(walls, sampleBox(Vec3(-g, -g, -t - g), Vec3(0.3 + g, 0.15, -g), kR), 0, id);                    // zMin
+  append(walls, sampleBox(Vec3(-g, -g, 0.3 + g), Vec3(0.3 + g, 0.15, 0.3 + t + g), kR), 0, id);          // zMax
+  append(walls, sampleBox(Vec3(0.08, 0.02, 0.13), Vec3(0.22, 0.12, 0.17), kR), 1, id);                   // paddle
   return ps;
 }
 
