@@ -43,14 +43,18 @@ std::size_t count(const std::vector<Offenders>& offenders) {
   return n;
 }
 
-std::optional<Domain> wallDomain(const ParticleSystem& particles, const std::vector<std::size_t>& boundarySets) {
+std::optional<Domain> wallDomain(const ParticleSystem& particles, const std::vector<std::size_t>& boundarySets,
+                                 const std::vector<Domain>& swept) {
   std::optional<Domain> box;
+  const auto add = [&](const Vec3& lo, const Vec3& hi) {
+    if (!box) box = Domain{lo, hi};
+    box->min = box->min.cwiseMin(lo);
+    box->max = box->max.cwiseMax(hi);
+  };
   for (std::size_t s : boundarySets)
-    for (const Vec3& p : particles[s].x()) {
-      if (!box) box = Domain{p, p};
-      box->min = box->min.cwiseMin(p);
-      box->max = box->max.cwiseMax(p);
-    }
+    for (const Vec3& p : particles[s].x()) add(p, p);
+  if (!box) return box;
+  for (const Domain& d : swept) add(d.min, d.max);
   if (box) {
     const double grow = (box->max - box->min).maxCoeff();
     box->min.array() -= grow;

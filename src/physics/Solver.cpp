@@ -101,17 +101,25 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
   if (state_.step == 0 || state_.nextDeltaT <= 0.0) state_.nextDeltaT = control_.deltaT;
   for (const ObjectMotion& m : wallMotions_) {
     std::size_t n = 0;
+    double reach = 0.0; // the largest distance of the body's particles from its rotation axis
     for (std::size_t k : boundarySets_) {
       const auto& object = particles_[k].integer(field::objectId);
-      n += static_cast<std::size_t>(std::count(object.begin(), object.end(), m.objectId));
+      const auto& rest = particles_[k].vec3(field::restPosition);
+      for (std::size_t i = 0; i < object.size(); ++i) {
+        if (object[i] != m.objectId) continue;
+        ++n;
+        reach = std::max(reach, m.motion.distanceFromAxis(rest[i]));
+      }
     }
+    wallReach_.push_back(reach);
     if (n == 0)
       throw InputError(m.where + ": region '" + m.region + "' has a motion, but the walls of the start time " +
                        "directory hold no particle of it (object id " + std::to_string(m.objectId) +
                        "); run sampleParticles again (it rewrites 0/) and start from 0");
   }
   placeWalls(state_.time, state_.nextDeltaT);
-  domain_ = settings_.health.domain ? settings_.health.domain : wallDomain(particles_, boundarySets_);
+  domain_ = settings_.health.domain ? settings_.health.domain
+                                    : wallDomain(particles_, boundarySets_, sweptByRotatingWalls());
   checkStartPositions();
 }
 
@@ -181,8 +189,8 @@ void Solver::setUpBoundarySet(ParticleSet& set) {
 
 void Solver::placeWalls(double t, double deltaT) {
   for (const ObjectMotion& m : wallMotions_) {
-    const Vec3 d = m.motion.displacement(t);
-    const Vec3 u = m.motion.meanVelocity(t, deltaT);
+    const WallMotion::Pose now = m.motion.pose(t);
+    const WallMotion::Pose next = m.motion.pose(t + deltaT);
     for (std::size_t k : boundarySets_) {
       ParticleSet& set = particles_[k];
       const auto& object = set.integer(field::objectId);
@@ -191,11 +199,37 @@ void Solver::placeWalls(double t, double deltaT) {
       auto& v = set.v();
       parallel::forEach(set.size(), [&](std::size_t i) {
         if (object[i] != m.objectId) return;
-        x[i] = rest[i] + d;
-        v[i] = u;
+        x[i] = m.motion.place(now, rest[i]);
+        v[i] = m.motion.meanVelocity(now, next, rest[i], deltaT);
       });
     }
   }
+}
+
+std::vector<Domain> Solver::sweptByRotatingWalls() const {
+  // Each particle of a rotating body runs on a circle about the axis (through the origin carried by the current
+  // displacement): the box of that circle is its centre +- radius sqrt(1 - a_i^2) along axis i. Whatever angles
+  // the motion reaches, the domain holds every place the body can turn to (an arm that turns up out of its tank,
+  // fluid it carries there), and it does not depend on the angle a run starts at.
+  std::vector<Domain> swept;
+  for (const ObjectMotion& m : wallMotions_) {
+    if (!m.motion.rotates()) continue;
+    const Vec3& a = m.motion.axis();
+    const Vec3 centre = m.motion.origin() + m.motion.pose(state_.time).displacement;
+    const Vec3 extent = (Vec3::Ones() - a.cwiseProduct(a)).cwiseMax(0.0).cwiseSqrt();
+    for (std::size_t k : boundarySets_) {
+      const ParticleSet& set = particles_[k];
+      const auto& object = set.integer(field::objectId);
+      for (std::size_t i = 0; i < set.size(); ++i) {
+        if (object[i] != m.objectId) continue;
+        const Vec3 r = set.x()[i] - centre;
+        const Vec3 onAxis = centre + r.dot(a) * a;
+        const double radius = (r - r.dot(a) * a).norm();
+        swept.push_back({onAxis - radius * extent, onAxis + radius * extent});
+      }
+    }
+  }
+  return swept;
 }
 
 void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
@@ -315,6 +349,12 @@ double Solver::maxSpeed() const {
     const auto& v = particles_[s].v();
     result = std::max(result, parallel::max(v.size(), 0.0, [&](std::size_t i) { return v[i].norm(); }));
   }
+  // The walls' velocities above are those of the step just done; the next step must also respect how fast the
+  // prescribed motions go within it (a wall that starts, or speeds up at a corner of its table): their largest
+  // speed |d'| + |theta'| (largest distance from the axis) over the longest step that can come.
+  const double ahead = control_.adjustTimeStep ? control_.maxDeltaT : control_.deltaT;
+  for (std::size_t m = 0; m < wallMotions_.size(); ++m)
+    result = std::max(result, wallMotions_[m].motion.maxSpeed(wallReach_[m], state_.time, state_.time + ahead));
   return result;
 }
 

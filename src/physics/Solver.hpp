@@ -26,7 +26,7 @@ struct StepReport {
   double deltaT = 0.0;
   PressureStats pressure;
   linalg::CgResult implicit;
-  double maxSpeed = 0.0;
+  double maxSpeed = 0.0; ///< largest particle speed, or prescribed wall speed within the next step [m/s]
   double maxFluidDensity = 0.0; ///< largest fluid rho~ = rho^/rho_f^0 at the start of the step (Eq. 4)
   double maxPoreFluidDensity = 0.0; ///< the same over fluid particles with porous neighbours
 };
@@ -106,8 +106,10 @@ private:
 
   void setUpPorousSet(ParticleSet& set, const PorousMaterial& material);
   void setUpBoundarySet(ParticleSet& set);
-  /// Moving walls to X + d(t), with the velocity that carries them to X + d(t + deltaT).
+  /// Moving walls to x(t) = c0 + d(t) + R(t) (X - c0), with the velocity that carries them to x(t + deltaT).
   void placeWalls(double t, double deltaT);
+  /// The boxes of the circles the particles of rotating walls run on, for the default domain.
+  std::vector<Domain> sweptByRotatingWalls() const;
 
   ParticleSystem particles_;
   FluidProperties fluid_;
@@ -124,6 +126,7 @@ private:
   ImplicitSolver implicit_;
   PressureSolver pressure_;
   std::vector<ObjectMotion> wallMotions_;
+  std::vector<double> wallReach_; ///< by motion: largest distance of its body's particles from its axis [m]
   StepReport report_;
   PhaseTimes phases_;
   StateSnapshot snapshot_;         ///< before the current step: undoes a step that ends in NaN

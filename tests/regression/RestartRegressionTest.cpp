@@ -5,6 +5,7 @@
 #include "physics/FieldNames.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <csignal>
 
 namespace poro::test {
@@ -220,6 +221,61 @@ TEST(Restart, MovingWallRunRestartsBitForBit) {
   // Every time directory holds the walls where they were, and case.pvd lists them for ParaView.
   EXPECT_TRUE(std::filesystem::exists(split.dir() / "0.05" / "boundary.vtp"));
   EXPECT_NE(split.read("case.pvd").find("0.1/boundary.vtp"), std::string::npos);
+}
+
+void addTurningPaddle(CaseRunner& runner) {
+  // A blade turning about the tank's depth axis (z) while its axis slides along x, from 0.02 s to 0.09 s: the
+  // restart reads it turned and displaced from 0.05/boundary.vtp and places it again from its rest positions.
+  runner.replace("system/particleDict", "    layers: 2\n",
+                 "    layers: 2\n"
+                 "  - name: blade\n"
+                 "    phase: boundary\n"
+                 "    shape: box\n"
+                 "    min: [0.22, 0.06, -0.0005]\n"
+                 "    max: [0.34, 0.1, 0.0405]\n"
+                 "    motion:\n"
+                 "      angularVelocity: [0, 0, -20]\n"
+                 "      origin: [0.28, 0.08, 0]\n"
+                 "      velocity: [0.2, 0, 0]\n"
+                 "      startTime: 0.02\n"
+                 "      endTime: 0.09\n");
+}
+
+TEST(Restart, TurningWallRunRestartsBitForBit) {
+  // As MovingWallRunRestartsBitForBit, with a wall that turns and translates.
+  CaseRunner straight("fluid/damBreak");
+  makeSmallDamBreak(straight, "0.1");
+  addTurningPaddle(straight);
+  ASSERT_EQ(straight.sample(), 0) << straight.read("log.sampleParticles");
+  EXPECT_NE(straight.read("log.sampleParticles").find("turning"), std::string::npos);
+  ASSERT_EQ(straight.solve("-threads 2"), 0) << straight.read("log.poroSph");
+
+  CaseRunner split("fluid/damBreak");
+  makeSmallDamBreak(split, "0.05");
+  addTurningPaddle(split);
+  ASSERT_EQ(split.sample(), 0);
+  ASSERT_EQ(split.solve("-threads 2"), 0) << split.read("log.poroSph");
+  split.setKey("system/controlDict", "endTime", "0.1");
+  std::filesystem::remove(split.dir() / "log.poroSph");
+  ASSERT_EQ(split.solve("-threads 1"), 0) << split.read("log.poroSph");
+
+  const ParticleSystem a = straight.particles("0.1", 0.005);
+  const ParticleSystem b = split.particles("0.1", 0.005);
+  expectIdentical(*a.find("fluid"), *b.find("fluid"));
+  expectIdentical(*a.find("boundary"), *b.find("boundary"));
+  // The blade did turn: 20 rad/s for 0.07 s, 1.4 rad clockwise about z. Its particle farthest along +x at rest
+  // (x = 0.335, y = 0.065 .. 0.095) is now below and left of the axis.
+  const ParticleSet& walls = *b.find("boundary");
+  const auto& rest = walls.vec3(field::restPosition);
+  std::size_t turned = 0;
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    if (walls.integer(field::objectId)[k] != 2) continue; // regions: column, tank, blade
+    const Vec3 r0 = rest[k] - Vec3(0.28, 0.08, 0), r = walls.x()[k] - Vec3(0.28 + 0.014, 0.08, 0);
+    const double angle = std::atan2(r0.x() * r.y() - r0.y() * r.x(), r0.x() * r.x() + r0.y() * r.y());
+    ASSERT_NEAR(angle, -1.4, 1e-9) << k;
+    ++turned;
+  }
+  EXPECT_GT(turned, 0u);
 }
 
 void makeSmallSeep(CaseRunner& runner, const std::string& endTime) {

@@ -13,6 +13,7 @@
 #include "io/TimeDirectory.hpp"
 #include "physics/FieldNames.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -104,7 +105,12 @@ int main(int argc, char* argv[]) try {
       }
       line << " of material " << materials[region.materialId].name << (region.fixed ? ", fixed" : "");
     }
-    if (region.motion) line << ", moving (prescribed, at most " << region.motion->maxSpeed() << " m/s)";
+    if (region.motion) {
+      double reach = 0.0; // the largest distance from the rotation axis, for the speed of a rotating wall
+      for (const Vec3& p : points) reach = std::max(reach, region.motion->distanceFromAxis(p));
+      line << ", moving (prescribed, at most " << region.motion->maxSpeed(reach) << " m/s"
+           << (region.motion->rotates() ? ", turning" : "") << ")";
+    }
     if (region.body && region.phase != ParticleRegion::Phase::Boundary) // how well the lattice fills the body
       line << " (enclosed volume / (2r)^3 = " << region.body->volume() / std::pow(2.0 * dict.particleRadius, 3) << ")";
     log::info(line.str());
