@@ -157,6 +157,21 @@ TEST(RigidBody, BadInputNamesFileLineKeyAndWhatWasExpected) {
   EXPECT_EQ(errorOf("density: 5\nfixedTranslation: [y]\nfixedAxis: [1, 0, 0]\n"), "no error");
 }
 
+TEST(RigidBody, TemplateDictionaryRigidRegionIsValid) {
+  // etc/caseDicts/particleDict documents a rigid region with every key.
+  const Dictionary dict = Dictionary::read(std::string(POROSPH_TEST_DATA) + "/../../etc/caseDicts/particleDict");
+  int rigid = 0;
+  for (const Dictionary& region : dict.getDictList("regions"))
+    if (region.getString("phase") == "rigid") {
+      const RigidBody::Spec spec = RigidBody::read(region, 0);
+      EXPECT_GT(spec.density, 0.0);
+      EXPECT_TRUE(spec.fixedTranslation[2]);
+      ASSERT_TRUE(spec.fixedAxis.has_value());
+      ++rigid;
+    }
+  EXPECT_EQ(rigid, 1);
+}
+
 // --- forces from the fluid ---------------------------------------------------------------------------------
 
 constexpr double kR = 0.01;
