@@ -120,6 +120,7 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
                        "); run sampleParticles again (it rewrites 0/) and start from 0");
   }
   setUpRigidBodies(std::move(rigidBodies));
+  noteRigidBodyFriction();
   placeWalls(state_.time, state_.nextDeltaT);
   domain_ = settings_.health.domain ? settings_.health.domain
                                     : wallDomain(particles_, boundarySets_, sweptByRotatingWalls());
@@ -248,6 +249,15 @@ void Solver::setUpRigidBodies(std::vector<RigidBody::Spec> specs) {
                        "' where system/particleDict has rigid region '" + specs[b].name + "'");
     if (!restart) state_.rigidBodies.push_back(rigidBodies_.back().initialState());
   }
+}
+
+void Solver::noteRigidBodyFriction() const {
+  bool friction = fluid_.boundaryViscosity > 0.0;
+  for (const PorousMaterial& m : materials_) friction = friction || m.boundaryDampingViscosity > 0.0;
+  if (rigidBodies_.empty() || !friction) return;
+  log::warning("rigid bodies take the reaction of the wall pressure only: the wall viscosity (boundaryViscosity, "
+               "boundaryDampingViscosity > 0) slows fluid and porous particles at their faces without pulling "
+               "the bodies along, so momentum is not conserved there");
 }
 
 void Solver::moveRigidBodies(const StepContext& ctx, double deltaT) {
