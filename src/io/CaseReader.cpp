@@ -41,7 +41,8 @@ std::vector<RigidBody::Spec> readRigidBodies(const fs::path& caseDir) {
   if (!dict.has("regions")) return bodies; // sampleParticles reports it
   const std::vector<Dictionary> regions = dict.getDictList("regions");
   for (std::size_t r = 0; r < regions.size(); ++r)
-    if (regions[r].getString("phase") == "rigid") bodies.push_back(RigidBody::read(regions[r], static_cast<long long>(r)));
+    if (regions[r].getString("phase") == "rigid")
+      bodies.push_back(RigidBody::read(regions[r], static_cast<long long>(r)));
   return bodies;
 }
 

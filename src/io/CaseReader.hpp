@@ -26,7 +26,7 @@ struct SimulationCase {
   std::string startName;                 ///< the time directory the run starts from
   RunState start;
   ParticleSystem particles;
-  std::vector<ObjectMotion> wallMotions; ///< the `motion:` blocks of system/particleDict's boundary regions
+  std::vector<ObjectMotion> wallMotions;    ///< the `motion:` blocks of system/particleDict's boundary regions
   std::vector<RigidBody::Spec> rigidBodies; ///< system/particleDict's rigid regions (physics/RigidBody.hpp)
   /// The start time directory is at endTime or after it (a finished case run again): nothing to run, and
   /// `particles` is empty.

@@ -11,13 +11,13 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <cstdlib>
-#include <iomanip>
 #include <cerrno>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
+#include <iomanip>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -106,7 +106,7 @@ void writeRunState(const fs::path& dir, const RunState& state, double particleRa
   };
   std::ostringstream bodies;
   bodies << "# Rigid bodies of this time directory (physics/RigidBody.hpp): centre of mass [m], rotation from the\n"
-         << "# sampled orientation (rows), velocity [m/s], angular momentum [kg m^2/s] and velocity [rad/s], world frame.\n"
+         << "# sampled orientation (rows), velocity [m/s], angular momentum and velocity, world frame.\n"
          << "bodies:\n";
   for (const RigidBodyState& b : state.rigidBodies) {
     bodies << "  - name: " << b.name << "\n    centre: " << vec(b.centre) << "\n    rotation: [";
@@ -139,9 +139,9 @@ void appendRigidBodyRows(const fs::path& caseDir, const RunState& state) {
     const Eigen::Quaterniond q{Eigen::Matrix3d(b.rotation)};
     std::ostringstream row;
     row << std::setprecision(10) << state.time;
-    for (double value : {b.centre.x(), b.centre.y(), b.centre.z(), q.w(), q.x(), q.y(), q.z(), b.velocity.x(),
-                         b.velocity.y(), b.velocity.z(), b.angularVelocity.x(), b.angularVelocity.y(),
-                         b.angularVelocity.z()})
+    for (double value :
+         {b.centre.x(), b.centre.y(), b.centre.z(), q.w(), q.x(), q.y(), q.z(), b.velocity.x(), b.velocity.y(),
+          b.velocity.z(), b.angularVelocity.x(), b.angularVelocity.y(), b.angularVelocity.z()})
       row << ',' << value;
     writeFileAtomically(file, kept + row.str() + "\n");
   }

@@ -38,7 +38,7 @@ class RigidBody {
 public:
   struct Spec {
     std::string name;
-    std::string where; ///< "file:line" of the region, for messages
+    std::string where;      ///< "file:line" of the region, for messages
     long long objectId = 0; ///< the index of its region in system/particleDict
     double density = 0.0;   ///< [kg/m^3], 0 when mass is given
     double mass = 0.0;      ///< [kg], 0 when density is given

@@ -16,7 +16,8 @@ std::vector<Wrench> rigidBodyWrenches(const StepContext& ctx, const std::vector<
   if (objectIds.empty()) return result;
   const long long largest = *std::max_element(objectIds.begin(), objectIds.end());
   std::vector<int> bodyOf(static_cast<std::size_t>(largest) + 1, -1);
-  for (std::size_t b = 0; b < objectIds.size(); ++b) bodyOf[static_cast<std::size_t>(objectIds[b])] = static_cast<int>(b);
+  for (std::size_t b = 0; b < objectIds.size(); ++b)
+    bodyOf[static_cast<std::size_t>(objectIds[b])] = static_cast<int>(b);
   for (std::size_t a : ctx.dynamicSets) {
     const ParticleSet& set = ctx.particles[a];
     const auto& x = set.x();

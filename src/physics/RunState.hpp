@@ -23,8 +23,8 @@ struct RigidBodyState {
 struct RunState {
   double time = 0.0;
   long long step = 0;
-  double nextDeltaT = 0.0; ///< the step size of the coming step [s]
-  double lastDeltaT = 0.0; ///< the step size of the step just taken [s], 0 before the first
+  double nextDeltaT = 0.0;                   ///< the step size of the coming step [s]
+  double lastDeltaT = 0.0;                   ///< the step size of the step just taken [s], 0 before the first
   std::vector<RigidBodyState> rigidBodies{}; ///< in system/particleDict order; empty without rigid regions
 };
 

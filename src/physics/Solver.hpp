@@ -138,7 +138,7 @@ private:
   std::vector<ObjectMotion> wallMotions_;
   bool hasRigidBodies_ = false;
   std::vector<RigidBody> rigidBodies_; ///< their states are in state_.rigidBodies, same order
-  std::vector<double> wallReach_; ///< by motion: largest distance of its body's particles from its axis [m]
+  std::vector<double> wallReach_;      ///< by motion: largest distance of its body's particles from its axis [m]
   StepReport report_;
   PhaseTimes phases_;
   StateSnapshot snapshot_;         ///< before the current step: undoes a step that ends in NaN

@@ -1,13 +1,13 @@
 // Rigid bodies (physics/RigidBody.hpp, RigidBodyForces.hpp): mass and inertia from the sampled particles, the
 // Newton-Euler integration and its constraints, the force and torque fluid pressure exerts, input checks.
 
+#include "physics/RigidBody.hpp"
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
 #include "geometry/LatticeSampling.hpp"
 #include "geometry/ShapeSampling.hpp"
 #include "geometry/Sphere.hpp"
 #include "physics/FieldNames.hpp"
-#include "physics/RigidBody.hpp"
 #include "physics/RigidBodyForces.hpp"
 #include "physics/Solver.hpp"
 #include "sph/BoundaryVolume.hpp"
@@ -81,7 +81,6 @@ TEST(RigidBody, SampledSphereInertiaIsTheAnalyticOneWithinTheLatticeError) {
 TEST(RigidBody, FreeRotationConservesAngularMomentumExactlyAndEnergyClosely) {
   // A torque-free asymmetric top spinning mostly about its middle axis (the unstable one: the hardest case).
   const double r = 0.01;
-  const RigidBody body(withDensity(1000.0), sampleBox(Vec3::Zero(), Vec3(0.2, 0.12, 0.06), r), r);
   RigidBody::Spec spec = withDensity(1000.0);
   spec.angularVelocity = Vec3(0.1, 5.0, 0.2);
   const RigidBody spinning(spec, sampleBox(Vec3::Zero(), Vec3(0.2, 0.12, 0.06), r), r);
@@ -96,9 +95,9 @@ TEST(RigidBody, FreeRotationConservesAngularMomentumExactlyAndEnergyClosely) {
   }
   EXPECT_EQ(s.angularMomentum, L0); // untouched without torque
   EXPECT_LE((s.rotation * s.rotation.transpose() - Mat3::Identity()).norm(), 1e-14);
-  EXPECT_LT(worst, 2e-3) << "energy drift of the first-order rotation update";
+  // The first-order rotation update lets the energy wander by O(dt): measured 3.7e-4 at dt = 1e-4 s.
+  EXPECT_LT(worst, 1e-3) << "energy drift of the first-order rotation update";
   EXPECT_LE((s.centre - spinning.restCentre()).norm(), 0.0);
-  (void)body;
 }
 
 TEST(RigidBody, ConstraintsHoldTranslationAndRotation) {
@@ -115,7 +114,7 @@ TEST(RigidBody, ConstraintsHoldTranslationAndRotation) {
   EXPECT_EQ(s.angularVelocity.x(), 0.0);
   EXPECT_EQ(s.angularVelocity.y(), 0.0);
   EXPECT_NEAR(s.angularVelocity.z(), 0.02 * 0.1 / hinge.bodyInertia()(2, 2), 1e-12); // L_z / I_zz
-  EXPECT_LE((s.rotation * Vec3::UnitZ() - Vec3::UnitZ()).norm(), 1e-15); // turned about z only
+  EXPECT_LE((s.rotation * Vec3::UnitZ() - Vec3::UnitZ()).norm(), 1e-15);             // turned about z only
 
   const RigidBody still(parse("mass: 2\nfixedRotation: true\n"), points, r);
   RigidBodyState t = still.initialState();
@@ -146,12 +145,14 @@ TEST(RigidBody, PoseDrivesParticlesAsAWallPoseAndChordVelocitiesLandOnTheNextPos
 }
 
 TEST(RigidBody, BadInputNamesFileLineKeyAndWhatWasExpected) {
-  EXPECT_NE(errorOf("shape: box\n").find("system/particleDict:1: key 'density'"), std::string::npos) << errorOf("shape: box\n");
+  EXPECT_NE(errorOf("shape: box\n").find("system/particleDict:1: key 'density'"), std::string::npos)
+      << errorOf("shape: box\n");
   EXPECT_NE(errorOf("density: 500\nmass: 2\n").find("mass"), std::string::npos);
   EXPECT_NE(errorOf("mass: 0\n").find("system/particleDict:3: key 'mass'"), std::string::npos) << errorOf("mass: 0\n");
   EXPECT_NE(errorOf("density: -5\n").find("density"), std::string::npos);
   EXPECT_NE(errorOf("density: 5\nfixedTranslation: [x, w]\n").find("fixedTranslation"), std::string::npos);
-  EXPECT_NE(errorOf("density: 5\nfixedAxis: [0, 0, 0]\n").find("system/particleDict:4: key 'fixedAxis'"), std::string::npos)
+  EXPECT_NE(errorOf("density: 5\nfixedAxis: [0, 0, 0]\n").find("system/particleDict:4: key 'fixedAxis'"),
+            std::string::npos)
       << errorOf("density: 5\nfixedAxis: [0, 0, 0]\n");
   EXPECT_NE(errorOf("density: 5\nfixedRotation: true\nfixedAxis: [0, 0, 1]\n").find("fixedAxis"), std::string::npos);
   EXPECT_EQ(errorOf("density: 5\nfixedTranslation: [y]\nfixedAxis: [1, 0, 0]\n"), "no error");
