@@ -35,9 +35,10 @@ int main(int argc, char* argv[]) try {
   banner << "Case: " << args.caseDir() << "\nStarting from time " << simulation.startName << " with "
          << simulation.particles.particleCount() << " particles";
   log::info(banner.str());
-  const bool movingWalls = !simulation.wallMotions.empty();
+  const bool movingWalls = !simulation.wallMotions.empty() || !simulation.rigidBodies.empty();
   Solver solver(std::move(simulation.particles), simulation.fluid, std::move(simulation.materials), simulation.solver,
-                simulation.control, simulation.start, std::move(simulation.wallMotions));
+                simulation.control, simulation.start, std::move(simulation.wallMotions),
+                std::move(simulation.rigidBodies));
   log::info("Threads: " + std::to_string(parallel::threads()));
   solver.checkStart(); // a refused start leaves case.pvd and postProcessing as they were
   TimeWriter writer(args.caseDir(), simulation.output, simulation.startName);

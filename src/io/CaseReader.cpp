@@ -35,6 +35,17 @@ std::vector<ObjectMotion> readWallMotions(const fs::path& caseDir) {
   return motions;
 }
 
+std::vector<RigidBody::Spec> readRigidBodies(const fs::path& caseDir) {
+  const Dictionary dict = Dictionary::read((caseDir / "system" / "particleDict").string());
+  std::vector<RigidBody::Spec> bodies;
+  if (!dict.has("regions")) return bodies; // sampleParticles reports it
+  const std::vector<Dictionary> regions = dict.getDictList("regions");
+  for (std::size_t r = 0; r < regions.size(); ++r)
+    if (regions[r].getString("phase") == "rigid")
+      bodies.push_back(RigidBody::read(regions[r], static_cast<long long>(r)));
+  return bodies;
+}
+
 std::vector<PorousMaterial> readPorousMaterials(const fs::path& caseDir) {
   const fs::path path = caseDir / "constant" / "porosityProperties";
   if (!fs::exists(path)) return {};
@@ -74,6 +85,7 @@ SimulationCase readCase(const fs::path& caseDir, int threads) {
   std::vector<PorousMaterial> materials = readPorousMaterials(caseDir);
   const double radius = readParticleRadius(caseDir);
   std::vector<ObjectMotion> wallMotions = readWallMotions(caseDir);
+  std::vector<RigidBody::Spec> rigidBodies = readRigidBodies(caseDir);
 
   const auto controlDictError = [&](const std::string& key, const std::string& message) {
     Dictionary::read((caseDir / "system" / "controlDict").string()).fail(key, message); // for the line
@@ -105,7 +117,7 @@ SimulationCase readCase(const fs::path& caseDir, int threads) {
   ParticleSystem particles =
       endTimeReached ? ParticleSystem(radius) : readParticles(caseDir, startName, radius, materials);
   return SimulationCase{control,   output, solver, fluid, std::move(materials), startName, start, std::move(particles),
-                        std::move(wallMotions), endTimeReached};
+                        std::move(wallMotions), std::move(rigidBodies), endTimeReached};
 }
 
 } // namespace poro

@@ -26,7 +26,8 @@ struct SimulationCase {
   std::string startName;                 ///< the time directory the run starts from
   RunState start;
   ParticleSystem particles;
-  std::vector<ObjectMotion> wallMotions; ///< the `motion:` blocks of system/particleDict's boundary regions
+  std::vector<ObjectMotion> wallMotions;    ///< the `motion:` blocks of system/particleDict's boundary regions
+  std::vector<RigidBody::Spec> rigidBodies; ///< system/particleDict's rigid regions (physics/RigidBody.hpp)
   /// The start time directory is at endTime or after it (a finished case run again): nothing to run, and
   /// `particles` is empty.
   bool endTimeReached = false;
@@ -41,6 +42,9 @@ double readParticleRadius(const std::filesystem::path& caseDir);
 /// The `motion:` blocks of system/particleDict (physics/WallMotion.hpp), validated, with the object id each
 /// region's particles carry (its index in `regions`). Only boundary regions may move.
 std::vector<ObjectMotion> readWallMotions(const std::filesystem::path& caseDir);
+
+/// The rigid regions of system/particleDict (physics/RigidBody.hpp), validated, with their object ids.
+std::vector<RigidBody::Spec> readRigidBodies(const std::filesystem::path& caseDir);
 
 /// The porous materials of constant/porosityProperties, validated (PorousMaterial::readAll), in file order;
 /// empty when the case has no such file (a fluid-only case).

@@ -8,12 +8,16 @@
 #include "io/PorousSets.hpp"
 #include "io/SamplingRecord.hpp"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
+#include <iomanip>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -95,6 +99,66 @@ void writeRunState(const fs::path& dir, const RunState& state, double particleRa
   if (particleRadius > 0.0)
     out << "particleRadius: " << formatExact(particleRadius) << "  # [m], must equal system/particleDict's\n";
   writeFileAtomically(dir / "uniform" / "time", out.str());
+  if (state.rigidBodies.empty()) return;
+  // Every number exactly (formatExact), so a restart continues the bodies bit for bit.
+  const auto vec = [](const Vec3& v) {
+    return "[" + formatExact(v.x()) + ", " + formatExact(v.y()) + ", " + formatExact(v.z()) + "]";
+  };
+  std::ostringstream bodies;
+  bodies << "# Rigid bodies of this time directory (physics/RigidBody.hpp): centre of mass [m], rotation from the\n"
+         << "# sampled orientation (rows), velocity [m/s], angular momentum and velocity, world frame.\n"
+         << "bodies:\n";
+  for (const RigidBodyState& b : state.rigidBodies) {
+    bodies << "  - name: " << b.name << "\n    centre: " << vec(b.centre) << "\n    rotation: [";
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) bodies << formatExact(b.rotation(r, c)) << (r == 2 && c == 2 ? "]\n" : ", ");
+    bodies << "    velocity: " << vec(b.velocity) << "\n    angularMomentum: " << vec(b.angularMomentum)
+           << "\n    angularVelocity: " << vec(b.angularVelocity) << "\n";
+  }
+  writeFileAtomically(dir / "uniform" / "rigidBodies", bodies.str());
+}
+
+/// postProcessing/rigidBodies/<name>.csv: one row per write; a row of a time at or after `time` (a run again from
+/// an earlier time) is dropped first, so the file holds one trajectory.
+void appendRigidBodyRows(const fs::path& caseDir, const RunState& state) {
+  if (state.rigidBodies.empty()) return;
+  const fs::path dir = caseDir / "postProcessing" / "rigidBodies";
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw OutputError(dir.string() + ": cannot create directory: " + ec.message());
+  const char* header = "time,cx,cy,cz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz";
+  for (const RigidBodyState& b : state.rigidBodies) {
+    const fs::path file = dir / (b.name + ".csv");
+    std::string kept = std::string(header) + "\n";
+    if (std::ifstream in{file}) {
+      std::string line;
+      std::getline(in, line);
+      while (std::getline(in, line))
+        if (!line.empty() && std::strtod(line.c_str(), nullptr) < state.time - 1e-12) kept += line + "\n";
+    }
+    const Eigen::Quaterniond q{Eigen::Matrix3d(b.rotation)};
+    std::ostringstream row;
+    row << std::setprecision(10) << state.time;
+    for (double value :
+         {b.centre.x(), b.centre.y(), b.centre.z(), q.w(), q.x(), q.y(), q.z(), b.velocity.x(), b.velocity.y(),
+          b.velocity.z(), b.angularVelocity.x(), b.angularVelocity.y(), b.angularVelocity.z()})
+      row << ',' << value;
+    writeFileAtomically(file, kept + row.str() + "\n");
+  }
+}
+
+RigidBodyState readRigidBody(const Dictionary& d) {
+  RigidBodyState b;
+  b.name = d.getString("name");
+  b.centre = d.getVec3("centre");
+  if (!d.has("rotation")) d.fail("rotation", "expected the body's rotation matrix, 9 numbers row by row");
+  const std::vector<double> r = d.getReals("rotation", 9, {});
+  for (int i = 0; i < 9; ++i) b.rotation(i / 3, i % 3) = r[static_cast<std::size_t>(i)];
+  b.velocity = d.getVec3("velocity");
+  b.angularMomentum = d.getVec3("angularMomentum");
+  b.angularVelocity = d.getVec3("angularVelocity");
+  d.checkUnknownKeys();
+  return b;
 }
 
 /// uniform/sampling (io/SamplingRecord.hpp), unless there is no record to write.
@@ -264,6 +328,10 @@ RunState readRunState(const fs::path& timeDir) {
   state.lastDeltaT = dict.getReal("lastDeltaT", 0.0, Range::nonNegative()); // 0: none (also older directories)
   dict.getReal("particleRadius", 0.0, Range::positive());          // checked against particleDict by readParticles
   dict.checkUnknownKeys();
+  const fs::path bodies = timeDir / "uniform" / "rigidBodies";
+  if (fs::exists(bodies))
+    for (const Dictionary& body : Dictionary::read(bodies.string()).getDictList("bodies"))
+      state.rigidBodies.push_back(readRigidBody(body));
   // The directory name is what startTime, latestTime and case.pvd go by; a run must not start elsewhere.
   double named = 0.0;
   const std::string name = timeDir.filename().string();
@@ -358,12 +426,13 @@ void TimeWriter::write(const ParticleSystem& particles, const RunState& state) {
   const std::string name = timeName(state.time);
   std::vector<std::string> parts;
   // Static walls live in the start directory 0/ only, so rewriting 0/ (step 0) writes them too.
-  const bool withBoundaries = movingWalls_ || state.step == 0;
+  const bool withBoundaries = movingWalls_ || state.step == 0 || !state.rigidBodies.empty();
   writeDirectoryAtomically(caseDir_, name, [&](const fs::path& dir) {
     parts = writeSets(dir, particles, withBoundaries, settings_.binary);
     writeRunState(dir, state, particles.particleRadius());
     writeSamplingRecord(dir, samplingRecord_);
   });
+  appendRigidBodyRows(caseDir_, state);
   // A rewritten directory (a run again from 0 replaces 0/) has lost the surfaces fluidSurface added to the old one.
   series_.removeMissingFiles(state.time, caseDir_);
   for (const std::string& part : parts) series_.add(state.time, part, name + "/" + part + ".vtp");

@@ -13,6 +13,7 @@
 #include "physics/NumericalHealth.hpp"
 #include "physics/PoreFluidDensityBias.hpp"
 #include "physics/PorousDrag.hpp"
+#include "physics/RigidBodyForces.hpp"
 #include "physics/StartDensity.hpp"
 #include "physics/TimeStepSize.hpp"
 #include "physics/VolumeFactors.hpp"
@@ -54,11 +55,12 @@ std::string formatDuration(double seconds) {
 
 Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vector<PorousMaterial> materials,
                const SolverSettings& settings, const TimeControl& control, const RunState& start,
-               std::vector<ObjectMotion> wallMotions)
+               std::vector<ObjectMotion> wallMotions, std::vector<RigidBody::Spec> rigidBodies)
     : particles_(std::move(particles)), fluid_(fluid), materials_(std::move(materials)), settings_(settings),
       control_(control), state_(start), kernel_(particles_.supportRadius()), search_(particles_.supportRadius()),
       implicit_(settings.implicit, makeImplicitTerms()), pressure_(settings.pressure),
       wallMotions_(std::move(wallMotions)) {
+  hasRigidBodies_ = !rigidBodies.empty();
   if (settings_.threads > 0) parallel::setThreads(settings_.threads);
   const double volume = particles_.particleVolume();
   if (settings_.pressure.latticeCorrectedPoreFluid) poreFluidBias_.emplace(kernel_, volume);
@@ -117,6 +119,8 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
                        "directory hold no particle of it (object id " + std::to_string(m.objectId) +
                        "); run sampleParticles again (it rewrites 0/) and start from 0");
   }
+  setUpRigidBodies(std::move(rigidBodies));
+  noteRigidBodyFriction();
   placeWalls(state_.time, state_.nextDeltaT);
   domain_ = settings_.health.domain ? settings_.health.domain
                                     : wallDomain(particles_, boundarySets_, sweptByRotatingWalls());
@@ -175,7 +179,7 @@ void Solver::setTimeControl(const TimeControl& control) {
 }
 
 void Solver::setUpBoundarySet(ParticleSet& set) {
-  if (!wallMotions_.empty()) { // moving walls: everything below is done at the rest position X
+  if (!wallMotions_.empty() || hasRigidBodies_) { // moving walls: everything below is done at the rest position X
     const bool restart = set.has(field::restPosition);
     auto& rest = set.addVec3(field::restPosition, Restart);
     if (!restart) rest = set.x();
@@ -204,6 +208,70 @@ void Solver::placeWalls(double t, double deltaT) {
       });
     }
   }
+  for (std::size_t b = 0; b < rigidBodies_.size(); ++b) { // a body's pose drives its particles as a wall's
+    const RigidBody& body = rigidBodies_[b];
+    const RigidBodyState& s = state_.rigidBodies[b];
+    for (std::size_t k : boundarySets_) {
+      ParticleSet& set = particles_[k];
+      const auto& object = set.integer(field::objectId);
+      const auto& rest = set.vec3(field::restPosition);
+      auto& x = set.x();
+      auto& v = set.v();
+      parallel::forEach(set.size(), [&](std::size_t i) {
+        if (object[i] != body.objectId()) return;
+        x[i] = body.place(s, rest[i]);
+        v[i] = body.chordVelocity(s, rest[i], deltaT);
+      });
+    }
+  }
+}
+
+void Solver::setUpRigidBodies(std::vector<RigidBody::Spec> specs) {
+  const bool restart = !state_.rigidBodies.empty();
+  if (restart && state_.rigidBodies.size() != specs.size())
+    throw InputError("uniform/rigidBodies of the start time directory holds " +
+                     std::to_string(state_.rigidBodies.size()) + " bodies, system/particleDict has " +
+                     std::to_string(specs.size()) + " rigid regions; run sampleParticles again and start from 0");
+  for (std::size_t b = 0; b < specs.size(); ++b) {
+    std::vector<Vec3> rest;
+    for (std::size_t k : boundarySets_) {
+      const auto& object = particles_[k].integer(field::objectId);
+      const auto& X = particles_[k].vec3(field::restPosition);
+      for (std::size_t i = 0; i < object.size(); ++i)
+        if (object[i] == specs[b].objectId) rest.push_back(X[i]);
+    }
+    if (rest.empty())
+      throw InputError(specs[b].where + ": rigid region '" + specs[b].name + "' has no particle in the walls of the " +
+                       "start time directory; run sampleParticles again (it rewrites 0/) and start from 0");
+    rigidBodies_.emplace_back(specs[b], rest, particles_.particleRadius());
+    if (restart && state_.rigidBodies[b].name != specs[b].name)
+      throw InputError("uniform/rigidBodies of the start time directory names body '" + state_.rigidBodies[b].name +
+                       "' where system/particleDict has rigid region '" + specs[b].name + "'");
+    if (!restart) state_.rigidBodies.push_back(rigidBodies_.back().initialState());
+  }
+}
+
+void Solver::noteRigidBodyFriction() const {
+  bool friction = fluid_.boundaryViscosity > 0.0;
+  for (const PorousMaterial& m : materials_) friction = friction || m.boundaryDampingViscosity > 0.0;
+  if (rigidBodies_.empty() || !friction) return;
+  log::warning("rigid bodies take the reaction of the wall pressure only: the wall viscosity (boundaryViscosity, "
+               "boundaryDampingViscosity > 0) slows fluid and porous particles at their faces without pulling "
+               "the bodies along, so momentum is not conserved there");
+}
+
+void Solver::moveRigidBodies(const StepContext& ctx, double deltaT) {
+  if (rigidBodies_.empty()) return;
+  std::vector<long long> objects;
+  std::vector<Vec3> centres;
+  for (std::size_t b = 0; b < rigidBodies_.size(); ++b) {
+    objects.push_back(rigidBodies_[b].objectId());
+    centres.push_back(state_.rigidBodies[b].centre);
+  }
+  const std::vector<Wrench> wrenches = rigidBodyWrenches(ctx, objects, centres);
+  for (std::size_t b = 0; b < rigidBodies_.size(); ++b)
+    rigidBodies_[b].integrate(state_.rigidBodies[b], wrenches[b].force + rigidBodies_[b].mass() * fluid_.gravity,
+                              wrenches[b].torque, deltaT);
 }
 
 std::vector<Domain> Solver::sweptByRotatingWalls() const {
@@ -303,6 +371,7 @@ void Solver::step(double deltaT) {
     ScopedPhase phase(phases_, "pressure");
     pressure_.predictDensities(ctx);
     report_.pressure = pressure_.solve(ctx);
+    moveRigidBodies(ctx, deltaT);
     if (state_.step + 1 == injectNaNStep_ && !dynamicSets_.empty() && particles_[dynamicSets_.front()].size() > 0)
       particles_[dynamicSets_.front()].v()[0] = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
   }

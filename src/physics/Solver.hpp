@@ -8,6 +8,7 @@
 #include "physics/ImplicitSolver.hpp"
 #include "physics/PorousMaterial.hpp"
 #include "physics/PressureSolver.hpp"
+#include "physics/RigidBody.hpp"
 #include "physics/RunState.hpp"
 #include "physics/SolverSettings.hpp"
 #include "physics/StateSnapshot.hpp"
@@ -45,9 +46,11 @@ public:
   /// object id has an entry in `wallMotions` move as prescribed; the others stay where they are. Throws
   /// InputError when a motion's object has no wall particle, and when particles of the fluid or porous sets lie
   /// outside the domain (health.domain, or the walls' box grown) unless health.leavingDomain is warn.
+  /// Rigid bodies (physics/RigidBody.hpp) are the boundary particles of their object id; their state comes from
+  /// `start.rigidBodies` (a restart) or, when that is empty, from the sampled particles at rest.
   Solver(ParticleSystem particles, const FluidProperties& fluid, std::vector<PorousMaterial> materials,
          const SolverSettings& settings, const TimeControl& control, const RunState& start,
-         std::vector<ObjectMotion> wallMotions = {});
+         std::vector<ObjectMotion> wallMotions = {}, std::vector<RigidBody::Spec> rigidBodies = {});
 
   /// Called at each write time and at the end; receives the solver to read particles and state from.
   using Writer = std::function<void(const Solver&)>;
@@ -76,6 +79,7 @@ public:
   ParticleSystem& particles() { return particles_; }
   const RunState& state() const { return state_; }
   const StepReport& lastStep() const { return report_; }
+  const std::vector<RigidBody>& rigidBodies() const { return rigidBodies_; }
   const PhaseTimes& phaseTimes() const { return phases_; }
   const TimeControl& timeControl() const { return control_; }
   /// Replaces the time settings while running (runTimeModifiable); the next step uses them.
@@ -108,6 +112,12 @@ private:
   void setUpBoundarySet(ParticleSet& set);
   /// Moving walls to x(t) = c0 + d(t) + R(t) (X - c0), with the velocity that carries them to x(t + deltaT).
   void placeWalls(double t, double deltaT);
+  /// Builds the rigid bodies from their particles' rest positions and their state (start or restart).
+  void setUpRigidBodies(std::vector<RigidBody::Spec> specs);
+  /// Newton-Euler step of every rigid body under the reactions of the pressure forces of this step and gravity.
+  void moveRigidBodies(const StepContext& ctx, double deltaT);
+  /// Warns that the wall viscosities' reactions are not yet applied to rigid bodies.
+  void noteRigidBodyFriction() const;
   /// The boxes of the circles the particles of rotating walls run on, for the default domain.
   std::vector<Domain> sweptByRotatingWalls() const;
 
@@ -126,7 +136,9 @@ private:
   ImplicitSolver implicit_;
   PressureSolver pressure_;
   std::vector<ObjectMotion> wallMotions_;
-  std::vector<double> wallReach_; ///< by motion: largest distance of its body's particles from its axis [m]
+  bool hasRigidBodies_ = false;
+  std::vector<RigidBody> rigidBodies_; ///< their states are in state_.rigidBodies, same order
+  std::vector<double> wallReach_;      ///< by motion: largest distance of its body's particles from its axis [m]
   StepReport report_;
   PhaseTimes phases_;
   StateSnapshot snapshot_;         ///< before the current step: undoes a step that ends in NaN

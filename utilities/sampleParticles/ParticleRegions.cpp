@@ -215,11 +215,12 @@ ParticleDict ParticleDict::read(const Dictionary& dict, const std::vector<Porous
   for (const Dictionary& region : dict.getDictList("regions")) {
     ParticleRegion r;
     r.name = region.getString("name");
-    const std::string phase = region.getWord("phase", {"fluid", "porous", "boundary"});
+    const std::string phase = region.getWord("phase", {"fluid", "porous", "boundary", "rigid"});
     r.phase = phase == "fluid"    ? ParticleRegion::Phase::Fluid
               : phase == "porous" ? ParticleRegion::Phase::Porous
+              : phase == "rigid"  ? ParticleRegion::Phase::Rigid
                                   : ParticleRegion::Phase::Boundary;
-    hasMatter = hasMatter || r.phase != ParticleRegion::Phase::Boundary;
+    hasMatter = hasMatter || r.phase == ParticleRegion::Phase::Fluid || r.phase == ParticleRegion::Phase::Porous;
     r.shape = readShape(region, r.phase);
     r.where = region.where("shape");
     std::optional<SurfaceSource> surface;
@@ -229,7 +230,11 @@ ParticleDict ParticleDict::read(const Dictionary& dict, const std::vector<Porous
       surface = readSurfaceKeys(region, surfaceDirectory);
     else
       readBox(region, r);
-    if (r.phase != ParticleRegion::Phase::Boundary) r.velocity = region.getVec3("velocity", Vec3::Zero());
+    if (r.phase == ParticleRegion::Phase::Rigid) { // its particles start at rest; the body has the velocities
+      r.rigid = RigidBody::read(region, static_cast<long long>(result.regions.size()));
+    } else if (r.phase != ParticleRegion::Phase::Boundary) {
+      r.velocity = region.getVec3("velocity", Vec3::Zero());
+    }
     if (r.phase == ParticleRegion::Phase::Porous) {
       r.materialId = readMaterial(region, materials);
       r.fixed = region.getBool("fixed", false);

@@ -9,6 +9,7 @@
 ///     - {name: stone, phase: porous, material: sand, shape: surface, file: stone.stl, scale: 0.01,
 ///        rotate: {axis: [0, 0, 1], angle: 90}, translate: [..], repair: false}
 ///     - {name: bowl, phase: boundary, shape: surface, file: bowl.obj, layers: 2, side: outside}
+///     - {name: log, phase: rigid, shape: box, min: [..], max: [..], density: 500}   (physics/RigidBody.hpp)
 /// Spheres and surfaces (RegionShapes.hpp) are filled on the lattice of their bounding box; as boundaries they
 /// are wall bodies of `layers` layers inside the surface, or outside it with `side: outside` (ShapeSampling.hpp).
 
@@ -17,6 +18,7 @@
 #include "geometry/LatticeSampling.hpp"
 #include "geometry/ShapeSampling.hpp"
 #include "physics/PorousMaterial.hpp"
+#include "physics/RigidBody.hpp"
 #include "physics/WallMotion.hpp"
 
 #include <filesystem>
@@ -29,7 +31,7 @@ namespace poro {
 class Dictionary;
 
 struct ParticleRegion {
-  enum class Phase { Fluid, Porous, Boundary };
+  enum class Phase { Fluid, Porous, Boundary, Rigid }; ///< Rigid: boundary particles of a rigid body
   enum class Shape { Box, Container, Sphere, Surface };
   std::string name;
   std::string where; ///< "file:line" of the region, for what only sampling finds out
@@ -44,6 +46,7 @@ struct ParticleRegion {
   FaceFlags open{};                            ///< faces of a container without wall
   WallSide side = WallSide::Inside;            ///< boundary sphere or surface: which side of it the wall lies on
   std::optional<WallMotion> motion;            ///< boundary: prescribed motion (the solver reads it again)
+  std::optional<RigidBody::Spec> rigid;        ///< rigid: mass and constraints (the solver reads them again)
 
   /// The region's particle positions. A sphere or surface that holds no lattice point is an InputError.
   std::vector<Vec3> sample(double particleRadius) const;

@@ -21,7 +21,7 @@ std::string format(const Vec3& v) {
 }
 
 const char* phaseName(Phase phase) {
-  return phase == Phase::Fluid ? "fluid" : phase == Phase::Porous ? "porous" : "wall";
+  return phase == Phase::Fluid ? "fluid" : phase == Phase::Porous ? "porous" : phase == Phase::Rigid ? "rigid" : "wall";
 }
 
 /// "region 'water' (fluid, system/particleDict:5)".

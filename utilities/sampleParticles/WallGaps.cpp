@@ -63,7 +63,7 @@ void reportWallGaps(const ParticleSystem& particles, const ParticleDict& dict) {
 
   for (std::size_t n = 0; n < dict.regions.size(); ++n) {
     const ParticleRegion& region = dict.regions[n];
-    if (region.phase == ParticleRegion::Phase::Boundary) continue;
+    if (region.phase == ParticleRegion::Phase::Boundary || region.phase == ParticleRegion::Phase::Rigid) continue;
     const Approach& a = closest[n];
     if (!std::isfinite(a.distance)) {
       log::info("region " + region.name + ": more than 2 r from every wall particle");

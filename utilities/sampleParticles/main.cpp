@@ -84,7 +84,9 @@ int main(int argc, char* argv[]) try {
       porous[m]->addInt(field::fixed, Restart);
     }
   ParticleSet* boundary =
-      hasRegion(dict, ParticleRegion::Phase::Boundary) ? &particles.add("boundary", SetKind::Boundary) : nullptr;
+      hasRegion(dict, ParticleRegion::Phase::Boundary) || hasRegion(dict, ParticleRegion::Phase::Rigid)
+          ? &particles.add("boundary", SetKind::Boundary)
+          : nullptr;
 
   long long nextId = 0; // ids are unique over all particles of the case
   for (std::size_t r = 0; r < dict.regions.size(); ++r) {
@@ -104,6 +106,10 @@ int main(int argc, char* argv[]) try {
         fixed[i] = region.fixed ? 1 : 0;
       }
       line << " of material " << materials[region.materialId].name << (region.fixed ? ", fixed" : "");
+    }
+    if (region.rigid) {
+      const RigidBody body(*region.rigid, points, dict.particleRadius);
+      line << ", a rigid body of mass " << body.mass() << " kg, centre of mass " << body.restCentre().transpose();
     }
     if (region.motion) {
       double reach = 0.0; // the largest distance from the rotation axis, for the speed of a rotating wall

@@ -1,0 +1,53 @@
+#include "physics/RigidBodyForces.hpp"
+
+#include "physics/FieldNames.hpp"
+#include "physics/VolumeFactors.hpp"
+#include "sph/BoundaryVolume.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+
+namespace poro {
+
+std::vector<Wrench> rigidBodyWrenches(const StepContext& ctx, const std::vector<long long>& objectIds,
+                                      const std::vector<Vec3>& centres) {
+  std::vector<Wrench> result(objectIds.size());
+  if (objectIds.empty()) return result;
+  const long long largest = *std::max_element(objectIds.begin(), objectIds.end());
+  std::vector<int> bodyOf(static_cast<std::size_t>(largest) + 1, -1);
+  for (std::size_t b = 0; b < objectIds.size(); ++b)
+    bodyOf[static_cast<std::size_t>(objectIds[b])] = static_cast<int>(b);
+  for (std::size_t a : ctx.dynamicSets) {
+    const ParticleSet& set = ctx.particles[a];
+    const auto& x = set.x();
+    const auto& pi = set.real(field::pi);
+    const std::int64_t* fixed = fixedFlags(set);
+    for (std::size_t k : ctx.boundarySets) {
+      const ParticleSet& wall = ctx.particles[k];
+      const auto& xk = wall.x();
+      const auto& volume = wall.real(kBoundaryVolumeField);
+      const auto& object = wall.integer(field::objectId);
+      const NeighbourList& list = ctx.search.list(a, k);
+      const auto& factors = ctx.gradients.of(a, k);
+      for (std::size_t i = 0; i < set.size(); ++i) {
+        if ((fixed && fixed[i]) || pi[i] == 0.0) continue;
+        std::size_t q = list.offset(i);
+        for (Index kIndex : list.of(i)) {
+          const std::size_t kk = static_cast<std::size_t>(kIndex);
+          const double s = factors[q++];
+          const long long id = object[kk];
+          if (id < 0 || id > largest || bodyOf[static_cast<std::size_t>(id)] < 0) continue;
+          Wrench& w = result[static_cast<std::size_t>(bodyOf[static_cast<std::size_t>(id)])];
+          // gradW_ak = s (x_a - x_k); the particle feels -V_k pi_a gradW_ak per unit mass.
+          const Vec3 f = (set.mass * volume[kk] * pi[i] * s) * (x[i] - xk[kk]);
+          w.force += f;
+          w.torque += (xk[kk] - centres[static_cast<std::size_t>(bodyOf[static_cast<std::size_t>(id)])]).cross(f);
+        }
+      }
+    }
+  }
+  return result;
+}
+
+} // namespace poro
