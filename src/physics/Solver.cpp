@@ -192,9 +192,8 @@ void Solver::setUpBoundarySet(ParticleSet& set) {
 }
 
 void Solver::placeWalls(double t, double deltaT) {
-  for (const ObjectMotion& m : wallMotions_) {
-    const WallMotion::Pose now = m.motion.pose(t);
-    const WallMotion::Pose next = m.motion.pose(t + deltaT);
+  // Moves the particles of one wall body (objectId) to place(rest) with velocity(rest).
+  const auto drive = [&](long long objectId, const auto& place, const auto& velocity) {
     for (std::size_t k : boundarySets_) {
       ParticleSet& set = particles_[k];
       const auto& object = set.integer(field::objectId);
@@ -202,27 +201,25 @@ void Solver::placeWalls(double t, double deltaT) {
       auto& x = set.x();
       auto& v = set.v();
       parallel::forEach(set.size(), [&](std::size_t i) {
-        if (object[i] != m.objectId) return;
-        x[i] = m.motion.place(now, rest[i]);
-        v[i] = m.motion.meanVelocity(now, next, rest[i], deltaT);
+        if (object[i] != objectId) return;
+        x[i] = place(rest[i]);
+        v[i] = velocity(rest[i]);
       });
     }
+  };
+  for (const ObjectMotion& m : wallMotions_) {
+    const WallMotion::Pose now = m.motion.pose(t);
+    const WallMotion::Pose next = m.motion.pose(t + deltaT);
+    drive(
+        m.objectId, [&](const Vec3& X) { return m.motion.place(now, X); },
+        [&](const Vec3& X) { return m.motion.meanVelocity(now, next, X, deltaT); });
   }
   for (std::size_t b = 0; b < rigidBodies_.size(); ++b) { // a body's pose drives its particles as a wall's
     const RigidBody& body = rigidBodies_[b];
     const RigidBodyState& s = state_.rigidBodies[b];
-    for (std::size_t k : boundarySets_) {
-      ParticleSet& set = particles_[k];
-      const auto& object = set.integer(field::objectId);
-      const auto& rest = set.vec3(field::restPosition);
-      auto& x = set.x();
-      auto& v = set.v();
-      parallel::forEach(set.size(), [&](std::size_t i) {
-        if (object[i] != body.objectId()) return;
-        x[i] = body.place(s, rest[i]);
-        v[i] = body.chordVelocity(s, rest[i], deltaT);
-      });
-    }
+    drive(
+        body.objectId(), [&](const Vec3& X) { return body.place(s, X); },
+        [&](const Vec3& X) { return body.chordVelocity(s, X, deltaT); });
   }
 }
 
