@@ -591,9 +591,10 @@ void Solver::notePoreFluidFill() const {
     if (m.porosity <= 0.0 || fill > 0.9) continue;
     std::ostringstream msg;
     msg << std::setprecision(3) << "porous material '" << m.name << "' (porosity " << m.porosity
-        << "): with pressure.poreFluidDensity paper (Eq. 4 as published, the default) fluid at rest fills about "
-        << std::lround(100.0 * fill) << " % of its pores (lattice estimate); pressure.poreFluidDensity "
-        << "latticeCorrected in system/solverDict fills them";
+        << "): with pressure.poreFluidDensity paper (Eq. 4 as published; the default once compatibility.preset is "
+        << "named) fluid at rest fills about " << std::lround(100.0 * fill)
+        << " % of its pores (lattice estimate); pressure.poreFluidDensity latticeCorrected in system/solverDict "
+        << "(PoroSPH's default without a preset) fills them";
     log::warning(msg.str());
   }
 }

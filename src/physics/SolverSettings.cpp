@@ -16,10 +16,10 @@ HealthAction readAction(const Dictionary& dict, const std::string& key, const st
   return word == "warn" ? HealthAction::Warn : word == "remove" ? HealthAction::Remove : HealthAction::Stop;
 }
 
-/// Reads one switch: `paperWord` (the default of the preset) or `referenceWord`.
-bool readSwitch(const Dictionary& dict, const std::string& key, const std::string& paperWord,
-                const std::string& referenceWord, bool fallback) {
-  return dict.getWord(key, {paperWord, referenceWord}, fallback ? referenceWord : paperWord) == referenceWord;
+/// Reads one switch: `offWord` (false) or `onWord` (true); `fallback` when the key is absent.
+bool readSwitch(const Dictionary& dict, const std::string& key, const std::string& offWord, const std::string& onWord,
+                bool fallback) {
+  return dict.getWord(key, {offWord, onWord}, fallback ? onWord : offWord) == onWord;
 }
 
 CompatibilitySettings readCompatibility(const Dictionary& c) {
@@ -48,6 +48,12 @@ CompatibilitySettings CompatibilitySettings::reference() {
 
 SolverSettings SolverSettings::read(const Dictionary& dict) {
   SolverSettings s;
+  // Compatibility first: naming a preset, paper or reference, asks for Eq. 4 as published, so it turns the
+  // default of pressure.poreFluidDensity back to paper (METHOD.md §3.3); the key itself still wins.
+  if (auto c = dict.optionalSubDict("compatibility")) {
+    s.compatibility = readCompatibility(*c);
+    if (c->has("preset")) s.pressure.latticeCorrectedPoreFluid = false;
+  }
   if (auto p = dict.optionalSubDict("pressure")) {
     auto& ps = s.pressure;
     ps.maxDensityError = p->getReal("maxDensityError", ps.maxDensityError, Range::positive());
@@ -59,7 +65,7 @@ SolverSettings SolverSettings::read(const Dictionary& dict) {
     ps.relaxation = p->getReal("relaxation", ps.relaxation, Range{0.0, 1.0, true, false});
     ps.warmStart = p->getReal("warmStart", ps.warmStart, Range::closed(0.0, 1.0));
     ps.latticeCorrectedPoreFluid =
-        p->getWord("poreFluidDensity", {"paper", "latticeCorrected"}, "paper") == "latticeCorrected";
+        readSwitch(*p, "poreFluidDensity", "paper", "latticeCorrected", ps.latticeCorrectedPoreFluid);
     p->checkUnknownKeys();
   }
   if (auto i = dict.optionalSubDict("implicit")) {
@@ -69,7 +75,6 @@ SolverSettings SolverSettings::read(const Dictionary& dict) {
     is.preconditioner = i->getWord("preconditioner", {"blockJacobi", "none"}, "blockJacobi") == "blockJacobi";
     i->checkUnknownKeys();
   }
-  if (auto c = dict.optionalSubDict("compatibility")) s.compatibility = readCompatibility(*c);
   if (auto n = dict.optionalSubDict("neighbourSearch")) {
     s.sortInterval = static_cast<int>(n->getInt("sortInterval", s.sortInterval, Range::closed(0, 1e9)));
     n->checkUnknownKeys();

@@ -15,8 +15,9 @@ struct PressureSettings {
   int maxIterations = 100;
   double relaxation = 0.5; ///< Jacobi relaxation omega, (0, 1]
   double warmStart = 0.5;  ///< warm-start factor, [0, 1]
-  /// poreFluidDensity: paper (false, Eq. 4 as it stands) | latticeCorrected (PoreFluidDensityBias.hpp)
-  bool latticeCorrectedPoreFluid = false;
+  /// poreFluidDensity: paper (false, Eq. 4 as it stands) | latticeCorrected (true, PoreFluidDensityBias.hpp).
+  /// Default latticeCorrected, so pores hold phi V; paper when system/solverDict names a compatibility preset.
+  bool latticeCorrectedPoreFluid = true;
 };
 
 struct ImplicitSettings {

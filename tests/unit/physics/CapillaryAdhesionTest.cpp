@@ -58,7 +58,7 @@ std::pair<Vec3, double> total(const linalg::BlockVector& v) {
 class Prepared {
 public:
   Prepared(ParticleSystem ps, std::vector<PorousMaterial> materials, bool restDensity = false) {
-    SolverSettings settings;
+    SolverSettings settings = eq4AsPublished();                    // PairByHand evaluates Eq. 4 as published
     settings.compatibility.restCouplingSolidDensity = restDensity; // couplingSolidDensity: rest (METHOD.md §10)
     solver_ = std::make_unique<Solver>(std::move(ps), weightless(), std::move(materials), settings, fixedStep(kDt),
                                        RunState{});

@@ -1,4 +1,5 @@
-// system/solverDict compatibility block: the switches of METHOD.md §10.
+// system/solverDict compatibility block: the switches of METHOD.md §10, and the pore-fluid density it sets the
+// default of (§3.3).
 
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
@@ -58,16 +59,46 @@ TEST(CompatibilitySettings, BadValuesAreInputErrorsWithLine) {
   EXPECT_NO_THROW(read("compatibility:\n  pressureSweep: jacobi\n  pressureWarmStartCap: none\n"));
 }
 
-TEST(PoreFluidDensity, PaperByDefaultLatticeCorrectedOnRequestAndAnythingElseIsAnError) {
-  // Not a compatibility switch: a correction the paper does not make (PoreFluidDensityBias.hpp), so the
-  // reference preset leaves it alone.
-  const auto pressure = [](const std::string& text) {
-    return SolverSettings::read(Dictionary::parse(text, "system/solverDict")).pressure;
-  };
-  EXPECT_FALSE(pressure("threads: 0\n").latticeCorrectedPoreFluid);
+PressureSettings pressure(const std::string& text) {
+  return SolverSettings::read(Dictionary::parse(text, "system/solverDict")).pressure;
+}
+
+TEST(PoreFluidDensity, LatticeCorrectedByDefaultSoPoresHoldPhiV) {
+  // Not in the paper (PoreFluidDensityBias.hpp), but with Eq. 4 as published phi = 0.4 pores hold 0.87 phi V.
+  EXPECT_TRUE(pressure("threads: 0\n").latticeCorrectedPoreFluid);
+  EXPECT_TRUE(pressure("pressure:\n  maxIterations: 50\n").latticeCorrectedPoreFluid);
+  EXPECT_TRUE(SolverSettings{}.pressure.latticeCorrectedPoreFluid); // the struct states the file's default
+  // Single compatibility switches are not a preset: they leave the default alone.
+  EXPECT_TRUE(pressure("compatibility: {volumetricStress: unitLambda}\n").latticeCorrectedPoreFluid);
+}
+
+TEST(PoreFluidDensity, TheTemplateStatesTheDefaults) {
+  // etc/caseDicts/solverDict says "these are the defaults": read as a case's file it changes nothing here.
+  const SolverSettings file =
+      SolverSettings::read(Dictionary::read(std::string(POROSPH_TEST_DATA) + "/../../etc/caseDicts/solverDict"));
+  EXPECT_EQ(file.pressure.latticeCorrectedPoreFluid, SolverSettings{}.pressure.latticeCorrectedPoreFluid);
+  EXPECT_FALSE(file.compatibility.unitLambdaVolumetricStress || file.compatibility.setSequentialPressure);
+}
+
+TEST(PoreFluidDensity, EitherPresetKeepsEq4AsPublished) {
+  // A named preset, paper or reference, asks for the published method: Eq. 4 verbatim, in either order of the
+  // two blocks in the file.
+  EXPECT_FALSE(pressure("compatibility: {preset: paper}\n").latticeCorrectedPoreFluid);
+  EXPECT_FALSE(pressure("compatibility: {preset: reference}\n").latticeCorrectedPoreFluid);
+  EXPECT_FALSE(
+      pressure("pressure: {maxIterations: 50}\ncompatibility: {preset: reference}\n").latticeCorrectedPoreFluid);
+  EXPECT_FALSE(pressure("compatibility: {preset: paper}\npressure: {maxIterations: 50}\n").latticeCorrectedPoreFluid);
+}
+
+TEST(PoreFluidDensity, TheKeyWinsOverDefaultAndPresetAndAnythingElseIsAnError) {
+  EXPECT_FALSE(pressure("pressure:\n  poreFluidDensity: paper\n").latticeCorrectedPoreFluid);
   EXPECT_TRUE(pressure("pressure:\n  poreFluidDensity: latticeCorrected\n").latticeCorrectedPoreFluid);
-  EXPECT_FALSE(pressure("pressure: {poreFluidDensity: paper}\ncompatibility: {preset: reference}\n")
-                   .latticeCorrectedPoreFluid);
+  EXPECT_TRUE(pressure("pressure: {poreFluidDensity: latticeCorrected}\ncompatibility: {preset: paper}\n")
+                  .latticeCorrectedPoreFluid);
+  EXPECT_TRUE(pressure("compatibility: {preset: reference}\npressure: {poreFluidDensity: latticeCorrected}\n")
+                  .latticeCorrectedPoreFluid);
+  EXPECT_FALSE(
+      pressure("pressure: {poreFluidDensity: paper}\ncompatibility: {preset: reference}\n").latticeCorrectedPoreFluid);
   try {
     pressure("pressure:\n  maxIterations: 50\n  poreFluidDensity: corrected\n");
     ADD_FAILURE() << "no InputError";

@@ -15,9 +15,9 @@ using namespace test;
 constexpr double kInteriorSum = 0.99997;
 constexpr double kLatticeTolerance = 1e-4; // the §2.2 table is quoted to 5 digits
 
-/// Runs steps 1-4 of the step on a system and returns the solver for inspection.
+/// Runs steps 1-4 of the step on a system (Eq. 4 as published) and returns the solver for inspection.
 std::unique_ptr<Solver> prepared(ParticleSystem ps, std::vector<PorousMaterial> materials) {
-  auto solver = std::make_unique<Solver>(std::move(ps), weightless(), std::move(materials), SolverSettings{},
+  auto solver = std::make_unique<Solver>(std::move(ps), weightless(), std::move(materials), eq4AsPublished(),
                                          fixedStep(1e-3), RunState{});
   solver->beginStep(1e-3);
   return solver;
@@ -113,8 +113,6 @@ TEST(FluidInPores, LatticeCorrectionPutsPoreFluidAtTheIdealSpacingAtRestDensity)
   // lattice of porosity phi is at rest density (within the solid lattice's +-0.2 % at the fluid particle's
   // offset); Eq. 4 as it stands reads it b(phi) too dense (+4.6 % at phi = 0.4), so the fluid would have to
   // spread out to ~10 % fewer particles.
-  SolverSettings corrected;
-  corrected.pressure.latticeCorrectedPoreFluid = true;
   for (const double phi : {0.3, 0.4, 0.6}) {
     const double spacing = 2.0 * kR / std::cbrt(phi);
     for (const bool correct : {false, true}) {
@@ -122,7 +120,7 @@ TEST(FluidInPores, LatticeCorrectionPutsPoreFluidAtTheIdealSpacingAtRestDensity)
       addSet(ps, "fluid", SetKind::Fluid, latticeOfSpacing(Vec3::Zero(), Vec3::Constant(0.24), spacing));
       addSet(ps, "sand", SetKind::Porous, sampleBox(Vec3::Zero(), Vec3::Constant(0.24), kR));
       Solver solver(std::move(ps), weightless(), {material("sand", phi, 2650.0, false)},
-                    correct ? corrected : SolverSettings{}, fixedStep(1e-3), RunState{});
+                    correct ? SolverSettings{} : eq4AsPublished(), fixedStep(1e-3), RunState{});
       solver.beginStep(1e-3);
       const ParticleSet& fluid = solver.particles()[0];
       const double rho = fluid.real(field::rhoTilde)[nearest(fluid.x(), Vec3::Constant(0.12))];
@@ -134,14 +132,12 @@ TEST(FluidInPores, LatticeCorrectionPutsPoreFluidAtTheIdealSpacingAtRestDensity)
 
 TEST(FluidInPores, LatticeCorrectionLeavesFluidAwayFromSolidsUnchanged) {
   // b(1) = 0 and walls do not count as solid: a fluid block on a wall has bit-identical densities.
-  SolverSettings corrected;
-  corrected.pressure.latticeCorrectedPoreFluid = true;
   std::vector<double> rho[2];
   for (const bool correct : {false, true}) {
     ParticleSystem ps(kR);
     addSet(ps, "fluid", SetKind::Fluid, kBlock);
     addSet(ps, "floor", SetKind::Boundary, sampleBox(Vec3(-0.04, -0.04, -0.04), Vec3(0.2, 0.0, 0.2), kR));
-    Solver solver(std::move(ps), weightless(), {}, correct ? corrected : SolverSettings{}, fixedStep(1e-3),
+    Solver solver(std::move(ps), weightless(), {}, correct ? SolverSettings{} : eq4AsPublished(), fixedStep(1e-3),
                   RunState{});
     solver.beginStep(1e-3);
     rho[correct] = solver.particles()[0].real(field::rhoTilde);

@@ -58,6 +58,14 @@ inline TimeControl fixedStep(double dt) {
   return control;
 }
 
+/// Eq. 4 as published (pressure.poreFluidDensity: paper): the hand formulas of METHOD.md §3.3 and §6.4 are
+/// stated for it. PoroSPH's default also subtracts the pore-lattice excess (PoreFluidDensityBias.hpp).
+inline SolverSettings eq4AsPublished() {
+  SolverSettings settings;
+  settings.pressure.latticeCorrectedPoreFluid = false;
+  return settings;
+}
+
 inline FluidProperties weightless() {
   FluidProperties fluid;
   fluid.gravity.setZero();

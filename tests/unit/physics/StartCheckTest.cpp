@@ -90,9 +90,7 @@ TEST(StartDensity, APreSaturatedBodyStartsInBothPoreFluidModes) {
   // Pore fluid at spacing 2r phi^(-1/3): rho~ = 1.047 in paper mode at phi = 0.4 (the lattice excess of Eq. 4),
   // 1.000 with latticeCorrected; the check judges both without the excess.
   const double phi = 0.4;
-  SolverSettings corrected;
-  corrected.pressure.latticeCorrectedPoreFluid = true;
-  for (const SolverSettings& settings : {SolverSettings{}, corrected})
+  for (const SolverSettings& settings : {eq4AsPublished(), SolverSettings{}})
     EXPECT_EQ(
         startError(soakedBlock(2.0 * kR * std::pow(phi, -1.0 / 3.0)), {material("soil", phi, 2000.0, false)}, settings),
         "");
