@@ -12,6 +12,10 @@ inline constexpr const char* sampledFixed = "sampledFixed";
 inline constexpr const char* restPosition = "X";        ///< porous: initial position X (METHOD.md §4.1) [m]
 inline constexpr const char* rotation = "R"; ///< elastic porous: rotation R of the last step (warm start, §6.5.2)
 inline constexpr const char* materialId = "materialId"; ///< porous: index of the material in porosityProperties (Int)
+/// compressible porous: kappa, the wall-contact pressure of the last solve (WallContact.hpp) [m^2/s^2]
+inline constexpr const char* contactPressure = "contactPressure";
+/// compressible porous: the largest wall share D the particle may reach (WallContact.hpp)
+inline constexpr const char* wallContactLimit = "wallContactLimit";
 // Output only.
 inline constexpr const char* density = "density";             ///< rho [kg/m^3]
 inline constexpr const char* pressure = "pressure";           ///< p = pi rho^2 / rho^max [Pa]
@@ -23,5 +27,8 @@ inline constexpr const char* rhoStar = "rhoStar";   ///< predicted normalised de
 inline constexpr const char* alpha = "alpha";       ///< 1/(|G|^2 + Q), the pressure diagonal factor [m^2]
 inline constexpr const char* gradSum = "gradSum";   ///< G = sum f V gradW [1/m]
 inline constexpr const char* accelP = "accelP";     ///< pressure acceleration a^p [m/s^2]
+inline constexpr const char* wallShare = "wallShare"; ///< compressible porous: D = sum_k V_k W_ak
+inline constexpr const char* wallShareStar = "wallShareStar"; ///< compressible porous: D predicted with v*
+inline constexpr const char* wallGradient = "wallGradient";   ///< compressible porous: sum_k V_k gradW_ak [1/m]
 
 } // namespace poro::field

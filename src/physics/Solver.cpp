@@ -17,6 +17,7 @@
 #include "physics/StartDensity.hpp"
 #include "physics/TimeStepSize.hpp"
 #include "physics/VolumeFactors.hpp"
+#include "physics/WallContact.hpp"
 #include "sph/BoundaryVolume.hpp"
 
 #include <algorithm>
@@ -59,7 +60,7 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
     : particles_(std::move(particles)), fluid_(fluid), materials_(std::move(materials)), settings_(settings),
       control_(control), state_(start), kernel_(particles_.supportRadius()), search_(particles_.supportRadius()),
       implicit_(settings.implicit, makeImplicitTerms()), pressure_(settings.pressure),
-      wallMotions_(std::move(wallMotions)) {
+      wallMotions_(std::move(wallMotions)), flatWallShare_(flatWallShare(kernel_, particles_.spacing())) {
   hasRigidBodies_ = !rigidBodies.empty();
   if (settings_.threads > 0) parallel::setThreads(settings_.threads);
   const double volume = particles_.particleVolume();
@@ -307,6 +308,7 @@ void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
   auto& fixed = set.addInt(field::fixed, Restart);
   auto& rest = set.addVec3(field::restPosition, Restart);
   if (material.youngsModulus > 0.0) Elasticity::registerFields(set);
+  if (material.compressible) registerWallContactFields(set);
   // The rest state is the sampled one: X = x at step 0, read back from the time directory afterwards.
   if (state_.step == 0) rest = set.x();
   if (state_.step == 0) { // 0/ is rewritten at step 0: fixedBox must not stick to it, an edited one applies anew
@@ -353,6 +355,7 @@ StepContext Solver::beginStep(double deltaT) {
   {
     ScopedPhase phase(phases_, "densities");
     computeDensities(ctx, gradients_);
+    initialiseWallContactLimits(ctx, flatWallShare_);
   }
   return ctx;
 }

@@ -136,6 +136,7 @@ private:
   ImplicitSolver implicit_;
   PressureSolver pressure_;
   std::vector<ObjectMotion> wallMotions_;
+  double flatWallShare_; ///< D of a particle resting on a flat wall (WallContact.hpp)
   bool hasRigidBodies_ = false;
   std::vector<RigidBody> rigidBodies_; ///< their states are in state_.rigidBodies, same order
   std::vector<double> wallReach_;      ///< by motion: largest distance of its body's particles from its axis [m]
