@@ -218,9 +218,10 @@ void Solver::placeWalls(double t, double deltaT) {
   for (std::size_t b = 0; b < rigidBodies_.size(); ++b) { // a body's pose drives its particles as a wall's
     const RigidBody& body = rigidBodies_[b];
     const RigidBodyState& s = state_.rigidBodies[b];
+    const bool held = body.heldAt(t);
     drive(
         body.objectId(), [&](const Vec3& X) { return body.place(s, X); },
-        [&](const Vec3& X) { return body.chordVelocity(s, X, deltaT); });
+        [&](const Vec3& X) { return held ? Vec3(Vec3::Zero()) : body.chordVelocity(s, X, deltaT); });
   }
 }
 
@@ -268,7 +269,8 @@ void Solver::moveRigidBodies(const StepContext& ctx, double deltaT) {
   }
   const std::vector<Wrench> wrenches = rigidBodyWrenches(ctx, objects, centres);
   for (std::size_t b = 0; b < rigidBodies_.size(); ++b)
-    rigidBodies_[b].integrate(state_.rigidBodies[b], wrenches[b].force + rigidBodies_[b].mass() * fluid_.gravity,
+    if (!rigidBodies_[b].heldAt(state_.time))
+      rigidBodies_[b].integrate(state_.rigidBodies[b], wrenches[b].force + rigidBodies_[b].mass() * fluid_.gravity,
                               wrenches[b].torque, deltaT);
 }
 
