@@ -12,7 +12,8 @@
 namespace poro {
 
 std::vector<Wrench> rigidBodyWrenches(const StepContext& ctx, const std::vector<long long>& objectIds,
-                                      const std::vector<Vec3>& centres) {
+                                      const std::vector<Vec3>& centres,
+                                      const std::vector<std::vector<Vec3>>& wallForces) {
   std::vector<Wrench> result(objectIds.size());
   if (objectIds.empty()) return result;
   const long long largest = *std::max_element(objectIds.begin(), objectIds.end());
@@ -48,6 +49,17 @@ std::vector<Wrench> rigidBodyWrenches(const StepContext& ctx, const std::vector<
           w.torque += (xk[kk] - centres[static_cast<std::size_t>(bodyOf[static_cast<std::size_t>(id)])]).cross(f);
         }
       }
+    }
+  }
+  for (std::size_t w = 0; w < wallForces.size(); ++w) {
+    const ParticleSet& wall = ctx.particles[ctx.boundarySets[w]];
+    const auto& object = wall.integer(field::objectId);
+    for (std::size_t k = 0; k < wallForces[w].size(); ++k) {
+      const long long id = object[k];
+      if (id < 0 || id > largest || bodyOf[static_cast<std::size_t>(id)] < 0) continue;
+      const std::size_t b = static_cast<std::size_t>(bodyOf[static_cast<std::size_t>(id)]);
+      result[b].force += wallForces[w][k];
+      result[b].torque += (wall.x()[k] - centres[b]).cross(wallForces[w][k]);
     }
   }
   return result;

@@ -121,7 +121,7 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
                        "); run sampleParticles again (it rewrites 0/) and start from 0");
   }
   setUpRigidBodies(std::move(rigidBodies));
-  noteRigidBodyFriction();
+  implicit_.collectWallReactions(!rigidBodies_.empty());
   placeWalls(state_.time, state_.nextDeltaT);
   domain_ = settings_.health.domain ? settings_.health.domain
                                     : wallDomain(particles_, boundarySets_, sweptByRotatingWalls());
@@ -250,15 +250,6 @@ void Solver::setUpRigidBodies(std::vector<RigidBody::Spec> specs) {
   }
 }
 
-void Solver::noteRigidBodyFriction() const {
-  bool friction = fluid_.boundaryViscosity > 0.0;
-  for (const PorousMaterial& m : materials_) friction = friction || m.boundaryDampingViscosity > 0.0;
-  if (rigidBodies_.empty() || !friction) return;
-  log::warning("rigid bodies take the reaction of the wall pressure only: the wall viscosity (boundaryViscosity, "
-               "boundaryDampingViscosity > 0) slows fluid and porous particles at their faces without pulling "
-               "the bodies along, so momentum is not conserved there");
-}
-
 void Solver::moveRigidBodies(const StepContext& ctx, double deltaT) {
   if (rigidBodies_.empty()) return;
   std::vector<long long> objects;
@@ -267,7 +258,7 @@ void Solver::moveRigidBodies(const StepContext& ctx, double deltaT) {
     objects.push_back(rigidBodies_[b].objectId());
     centres.push_back(state_.rigidBodies[b].centre);
   }
-  const std::vector<Wrench> wrenches = rigidBodyWrenches(ctx, objects, centres);
+  const std::vector<Wrench> wrenches = rigidBodyWrenches(ctx, objects, centres, implicit_.wallReactions());
   for (std::size_t b = 0; b < rigidBodies_.size(); ++b)
     if (!rigidBodies_[b].heldAt(state_.time))
       rigidBodies_[b].integrate(state_.rigidBodies[b], wrenches[b].force + rigidBodies_[b].mass() * fluid_.gravity,

@@ -116,8 +116,6 @@ private:
   void setUpRigidBodies(std::vector<RigidBody::Spec> specs);
   /// Newton-Euler step of every rigid body under the reactions of the pressure forces of this step and gravity.
   void moveRigidBodies(const StepContext& ctx, double deltaT);
-  /// Warns that the wall viscosities' reactions are not yet applied to rigid bodies.
-  void noteRigidBodyFriction() const;
   /// The boxes of the circles the particles of rotating walls run on, for the default domain.
   std::vector<Domain> sweptByRotatingWalls() const;
 
