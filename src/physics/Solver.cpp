@@ -9,13 +9,13 @@
 #include "physics/Densities.hpp"
 #include "physics/Elasticity.hpp"
 #include "physics/FieldNames.hpp"
-#include "physics/Viscosity.hpp"
 #include "physics/NumericalHealth.hpp"
 #include "physics/PoreFluidDensityBias.hpp"
 #include "physics/PorousDrag.hpp"
 #include "physics/RigidBodyForces.hpp"
 #include "physics/StartDensity.hpp"
 #include "physics/TimeStepSize.hpp"
+#include "physics/Viscosity.hpp"
 #include "physics/VolumeFactors.hpp"
 #include "physics/WallContact.hpp"
 #include "sph/BoundaryVolume.hpp"
@@ -123,8 +123,8 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
   setUpRigidBodies(std::move(rigidBodies));
   implicit_.collectWallReactions(!rigidBodies_.empty());
   placeWalls(state_.time, state_.nextDeltaT);
-  domain_ = settings_.health.domain ? settings_.health.domain
-                                    : wallDomain(particles_, boundarySets_, sweptByRotatingWalls());
+  domain_ =
+      settings_.health.domain ? settings_.health.domain : wallDomain(particles_, boundarySets_, sweptByRotatingWalls());
   checkStartPositions();
 }
 
@@ -174,9 +174,8 @@ void Solver::checkStartDensity() {
 
 void Solver::setTimeControl(const TimeControl& control) {
   control_ = control;
-  state_.nextDeltaT = control_.adjustTimeStep
-                          ? std::clamp(state_.nextDeltaT, control_.minDeltaT, control_.maxDeltaT)
-                          : control_.deltaT;
+  state_.nextDeltaT =
+      control_.adjustTimeStep ? std::clamp(state_.nextDeltaT, control_.minDeltaT, control_.maxDeltaT) : control_.deltaT;
 }
 
 void Solver::setUpBoundarySet(ParticleSet& set) {
@@ -262,7 +261,7 @@ void Solver::moveRigidBodies(const StepContext& ctx, double deltaT) {
   for (std::size_t b = 0; b < rigidBodies_.size(); ++b)
     if (!rigidBodies_[b].heldAt(state_.time))
       rigidBodies_[b].integrate(state_.rigidBodies[b], wrenches[b].force + rigidBodies_[b].mass() * fluid_.gravity,
-                              wrenches[b].torque, deltaT);
+                                wrenches[b].torque, deltaT);
 }
 
 std::vector<Domain> Solver::sweptByRotatingWalls() const {
@@ -307,8 +306,10 @@ void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
   if (state_.step == 0) { // 0/ is rewritten at step 0: fixedBox must not stick to it, an edited one applies anew
     const bool rewritten = set.has(field::sampledFixed);
     auto& sampled = set.addInt(field::sampledFixed, Restart);
-    if (rewritten) fixed = sampled;
-    else sampled = fixed;
+    if (rewritten)
+      fixed = sampled;
+    else
+      sampled = fixed;
   }
   if (material.fixedBox) { // strictly inside the material's fixedBox at X (METHOD.md §4.2)
     const auto& [lo, hi] = *material.fixedBox;
@@ -318,9 +319,17 @@ void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
 }
 
 StepContext Solver::context(double deltaT) {
-  return StepContext{particles_,    search_,      gradients_,    kernel_,
-                     fluid_,        deltaT,       dynamicSets_,  boundarySets_,
-                     setMaterials_, settings_.compatibility, state_.lastDeltaT,
+  return StepContext{particles_,
+                     search_,
+                     gradients_,
+                     kernel_,
+                     fluid_,
+                     deltaT,
+                     dynamicSets_,
+                     boundarySets_,
+                     setMaterials_,
+                     settings_.compatibility,
+                     state_.lastDeltaT,
                      poreFluidBias_ ? &*poreFluidBias_ : nullptr};
 }
 
@@ -538,7 +547,9 @@ void Solver::checkHealth(const Writer& write) {
         removeParticles(particles_, outside);
         log::warning(msg.str() + " (health.leavingDomain remove: they are deleted).");
         break;
-      case HealthAction::Stop: stopAfterWriting(write, msg.str() + " (health.leavingDomain stop)."); break;
+      case HealthAction::Stop:
+        stopAfterWriting(write, msg.str() + " (health.leavingDomain stop).");
+        break;
       }
     }
   }

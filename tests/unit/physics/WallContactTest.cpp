@@ -36,8 +36,8 @@ PorousMaterial foam() {
 
 /// The plate moves down from 0.09 to `bottom` over 0.2 s and holds there.
 std::vector<ObjectMotion> plateDownTo(double bottom) {
-  return {ObjectMotion{kPlate, "plate", "test", WallMotion({{0.0, Vec3::Zero(), 0.0},
-                                                             {0.2, Vec3(0.0, bottom - 0.09, 0.0), 0.0}})}};
+  return {ObjectMotion{kPlate, "plate", "test",
+                       WallMotion({{0.0, Vec3::Zero(), 0.0}, {0.2, Vec3(0.0, bottom - 0.09, 0.0), 0.0}})}};
 }
 
 TEST(WallContact, FlatWallShareIsThatOfASampledTwoLayerWall) {
