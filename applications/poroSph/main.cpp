@@ -5,6 +5,7 @@
 #include "core/Log.hpp"
 #include "core/Parallel.hpp"
 #include "core/StopSignals.hpp"
+#include "io/CaseLock.hpp"
 #include "io/CaseReader.hpp"
 #include "io/ControlDictWatcher.hpp"
 #include "io/SolverPerformanceLog.hpp"
@@ -24,6 +25,7 @@ int main(int argc, char* argv[]) try {
     std::cout << args.usage();
     return 0;
   }
+  const CaseLock lock(args.caseDir(), "poroSph"); // before readCase: its recovery deletes unfinished output
   SimulationCase simulation = readCase(args.caseDir(), args.threads());
   if (simulation.endTimeReached) {
     log::info("Case: " + args.caseDir() + "\nThe start time directory " + simulation.startName +

@@ -4,6 +4,7 @@
 #include "physics/FieldNames.hpp"
 #include "physics/PoreFluidDensityBias.hpp"
 #include "physics/VolumeFactors.hpp"
+#include "physics/WallContact.hpp"
 #include "sph/BoundaryVolume.hpp"
 
 #include <algorithm>
@@ -54,6 +55,9 @@ void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& g
   double* localPorosity = porous ? nullptr : set.real(field::localPorosity).data();
   const std::int64_t* objectA = set.integer(field::objectId).data();
   const PoreFluidDensityBias* poreBias = porous ? nullptr : ctx.poreFluidBias;
+  const bool contact = hasWallContact(set);
+  double* wallShare = contact ? set.real(field::wallShare).data() : nullptr;
+  Vec3* wallGradient = contact ? set.vec3(field::wallGradient).data() : nullptr;
 
   std::vector<Partner> partners;
   const auto couplings = couplingsOf(ctx, a);
@@ -111,6 +115,7 @@ void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& g
     }
     double rt = volume * sumW;
     double wallW = 0.0;
+    Vec3 wallG = Vec3::Zero();
     g *= volume;
     q *= volume * volume;
     for (const Wall& wall : walls) {
@@ -124,9 +129,14 @@ void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& g
         const double vk = (*wall.volume)[kk];
         wallW += vk * kernel.w(dist);
         g += (vk * s) * xik;
+        if (contact) wallG += (vk * s) * xik;
       }
     }
     rt += wallW;
+    if (contact) {
+      wallShare[i] = wallW;
+      wallGradient[i] = wallG;
+    }
     if (poreBias && solidW > 0.0) rt -= (*poreBias)(1.0 - volume * solidW);
     rhoTilde[i] = rt;
     density[i] = rhoMax * rt;

@@ -9,19 +9,26 @@ inline constexpr const char* deltaV = "deltaV"; ///< last implicit increment u -
 inline constexpr const char* fixed = "fixed"; ///< porous: 1 = Fixed (held in place, METHOD.md §4.2), 0 = Active (Int)
 /// porous: the Fixed flags as sampled (particleDict `fixed`), before a material's fixedBox adds to them (Int)
 inline constexpr const char* sampledFixed = "sampledFixed";
-inline constexpr const char* restPosition = "X";        ///< porous: initial position X (METHOD.md §4.1) [m]
-inline constexpr const char* rotation = "R"; ///< elastic porous: rotation R of the last step (warm start, §6.5.2)
+inline constexpr const char* restPosition = "X"; ///< porous: initial position X (METHOD.md §4.1) [m]
+inline constexpr const char* rotation = "R";     ///< elastic porous: rotation R of the last step (warm start, §6.5.2)
 inline constexpr const char* materialId = "materialId"; ///< porous: index of the material in porosityProperties (Int)
+/// compressible porous: kappa, the wall-contact pressure of the last solve (WallContact.hpp) [m^2/s^2]
+inline constexpr const char* contactPressure = "contactPressure";
+/// compressible porous: the largest wall share D the particle may reach (WallContact.hpp)
+inline constexpr const char* wallContactLimit = "wallContactLimit";
 // Output only.
 inline constexpr const char* density = "density";             ///< rho [kg/m^3]
 inline constexpr const char* pressure = "pressure";           ///< p = pi rho^2 / rho^max [Pa]
 inline constexpr const char* saturation = "saturation";       ///< porous: S (Eq. 12), in [0, 1]
 inline constexpr const char* localPorosity = "localPorosity"; ///< fluid: phi^loc, share of the volume open to fluid
 // Scratch, recomputed every step.
-inline constexpr const char* rhoTilde = "rhoTilde"; ///< normalised density rho / rho^max
-inline constexpr const char* rhoStar = "rhoStar";   ///< predicted normalised density (Eq. 6)
-inline constexpr const char* alpha = "alpha";       ///< 1/(|G|^2 + Q), the pressure diagonal factor [m^2]
-inline constexpr const char* gradSum = "gradSum";   ///< G = sum f V gradW [1/m]
-inline constexpr const char* accelP = "accelP";     ///< pressure acceleration a^p [m/s^2]
+inline constexpr const char* rhoTilde = "rhoTilde";           ///< normalised density rho / rho^max
+inline constexpr const char* rhoStar = "rhoStar";             ///< predicted normalised density (Eq. 6)
+inline constexpr const char* alpha = "alpha";                 ///< 1/(|G|^2 + Q), the pressure diagonal factor [m^2]
+inline constexpr const char* gradSum = "gradSum";             ///< G = sum f V gradW [1/m]
+inline constexpr const char* accelP = "accelP";               ///< pressure acceleration a^p [m/s^2]
+inline constexpr const char* wallShare = "wallShare";         ///< compressible porous: D = sum_k V_k W_ak
+inline constexpr const char* wallShareStar = "wallShareStar"; ///< compressible porous: D predicted with v*
+inline constexpr const char* wallGradient = "wallGradient";   ///< compressible porous: sum_k V_k gradW_ak [1/m]
 
 } // namespace poro::field

@@ -108,6 +108,7 @@ void ImplicitSolver::rhs(const linalg::BlockVector& b) const {
 
 linalg::CgResult ImplicitSolver::solve(const StepContext& ctx) {
   prepare(ctx);
+  wallReactions_.clear();
   const Vec3 gdt = ctx.dt * ctx.fluid.gravity;
   linalg::CgResult result;
   result.converged = true;
@@ -150,6 +151,10 @@ linalg::CgResult ImplicitSolver::solve(const StepContext& ctx) {
   }
   const linalg::CgWork work{view(ctx, kR), view(ctx, kZ), view(ctx, kP), view(ctx, kQ)};
   result = linalg::solveCg(Operator(*this), inverse, b, u, work, {settings_.tolerance, settings_.maxIterations});
+  if (collectWallReactions_) {
+    for (std::size_t k : ctx.boundarySets) wallReactions_.emplace_back(ctx.particles[k].size(), Vec3::Zero());
+    for (const ImplicitTerm* term : enabled_) term->addWallReactions(u, wallReactions_);
+  }
 
   for (std::size_t a : ctx.dynamicSets) { // v* = u + dt g, dv = u - v^n; Fixed: v* = v^n (METHOD.md §6.5.9)
     ParticleSet& set = ctx.particles[a];

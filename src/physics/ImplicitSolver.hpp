@@ -22,7 +22,12 @@ public:
   static void registerFields(ParticleSet& set);
 
   /// Replaces v^n by v* for every dynamic set. Returns the CG statistics (0 iterations if no term is on).
+  /// With collectWallReactions, also keeps the forces the terms exert on wall particles (wallReactions()).
   linalg::CgResult solve(const StepContext& ctx);
+  void collectWallReactions(bool on) { collectWallReactions_ = on; }
+  /// By boundary set (in ctx.boundarySets order), by particle: the force the last solve's terms exert on it [N];
+  /// empty when not collected or no term was on.
+  const std::vector<std::vector<Vec3>>& wallReactions() const { return wallReactions_; }
 
   /// The operator u -> A u of the current step (after solve or prepare), for tests.
   void prepare(const StepContext& ctx);
@@ -38,6 +43,8 @@ private:
   std::vector<std::unique_ptr<ImplicitTerm>> terms_;
   std::vector<ImplicitTerm*> enabled_;
   const StepContext* ctx_ = nullptr;
+  bool collectWallReactions_ = false;
+  std::vector<std::vector<Vec3>> wallReactions_;
 };
 
 } // namespace poro

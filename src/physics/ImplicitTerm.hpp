@@ -24,6 +24,9 @@ public:
   virtual void addDiagonal(const linalg::BlockDiagonal& d) const = 0;
   /// b += dt F^x (position and known-velocity parts).
   virtual void addRhs(const linalg::BlockVector& b) const = 0;
+  /// forces[w][k] += the force the term's particles exert on particle k of the boundary set ctx.boundarySets[w]
+  /// at the solution u: the reaction of the term's wall part (rigid bodies take it). Terms without walls add none.
+  virtual void addWallReactions(const linalg::BlockVector& /*u*/, std::vector<std::vector<Vec3>>& /*forces*/) const {}
 };
 
 } // namespace poro

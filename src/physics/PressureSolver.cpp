@@ -3,6 +3,7 @@
 #include "core/Parallel.hpp"
 #include "physics/FieldNames.hpp"
 #include "physics/VolumeFactors.hpp"
+#include "physics/WallContact.hpp"
 #include "sph/BoundaryVolume.hpp"
 
 #include <algorithm>
@@ -118,6 +119,7 @@ void PressureSolver::predictDensities(const StepContext& ctx) const {
       rhoStar[i] = rhoTilde[i] + dt * change;
     });
   }
+  predictWallShares(ctx);
 }
 
 void PressureSolver::computeAccelerations(const StepContext& ctx, const std::vector<std::size_t>& sets) const {
@@ -132,6 +134,9 @@ void PressureSolver::computeAccelerations(const StepContext& ctx, const std::vec
     auto& accel = set.vec3(field::accelP);
     const std::int64_t* fixed = fixedFlags(set);
     const double volume = set.particleVolume;
+    const bool contact = hasWallContact(set);
+    const double* kappa = contact ? set.real(field::contactPressure).data() : nullptr;
+    const Vec3* wallGradient = contact ? set.vec3(field::wallGradient).data() : nullptr;
     auto partners = partnersOf(ctx, a);
     partners.erase(std::remove_if(partners.begin(), partners.end(),
                                   [](const PartnerView& p) {
@@ -156,6 +161,7 @@ void PressureSolver::computeAccelerations(const StepContext& ctx, const std::vec
         }
       }
       accel[i] = -pi[i] * gradSum[i] - volume * sum;
+      if (contact) accel[i] -= kappa[i] * wallGradient[i]; // WallContact.hpp
     });
   }
 }
@@ -205,6 +211,7 @@ void PressureSolver::warmStart(const StepContext& ctx) const {
         pi[i] *= factor;
     });
   }
+  warmStartContactPressure(ctx, factor);
 }
 
 PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<std::size_t>& sets) const {
@@ -230,6 +237,11 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
       const double volume = set.particleVolume;
       const auto partners = partnersOf(ctx, a);
       const std::size_t n = set.size();
+      const bool contact = hasWallContact(set);
+      double* kappa = contact ? set.real(field::contactPressure).data() : nullptr;
+      const Vec3* wallGradient = contact ? set.vec3(field::wallGradient).data() : nullptr;
+      const double* wallStar = contact ? set.real(field::wallShareStar).data() : nullptr;
+      const double* wallLimit = contact ? set.real(field::wallContactLimit).data() : nullptr;
       // (A pi)_a = dt^2 [a_a.G_a - V sum_b f s_ab a_b.x_ab]; r = (1 - rho~*) - (A pi); error max(-r, 0).
       const double errorSum = parallel::sum<double>(n, [&](std::size_t i) {
         if (fixed && fixed[i]) {
@@ -241,6 +253,12 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
         const double r = (1.0 - rhoStar[i]) - api;
         residual[i] = std::max(-r, 0.0);
         pi[i] = std::max(pi[i] - omega * r * alpha[i] / dt2, 0.0);
+        if (contact) { // the wall-share constraint D* <= D^max with the same a^p (WallContact.hpp)
+          const double g2 = wallGradient[i].squaredNorm();
+          const double rc = (wallLimit[i] - wallStar[i]) - dt2 * accel[i].dot(wallGradient[i]);
+          residual[i] = std::max(residual[i], -rc);
+          kappa[i] = g2 > 0.0 ? std::max(kappa[i] - omega * rc / (dt2 * g2), 0.0) : 0.0;
+        }
         return residual[i];
       });
       const std::size_t active =

@@ -27,6 +27,7 @@ RigidBody::Spec RigidBody::read(const Dictionary& region, long long objectId) {
   for (const std::string& axis : region.getWordList("fixedTranslation", {"x", "y", "z"}))
     spec.fixedTranslation[static_cast<std::size_t>(axis[0] - 'x')] = true;
   spec.fixedRotation = region.getBool("fixedRotation", false);
+  spec.releaseTime = region.getReal("releaseTime", 0.0, Range::atLeast(0.0));
   region.markKnown("fixedAxis");
   if (region.has("fixedAxis")) {
     if (spec.fixedRotation)

@@ -21,6 +21,7 @@
 ///   fixedTranslation: [x, z]     # world directions the centre of mass does not move along, default none
 ///   fixedRotation: false         # true: the body does not turn
 ///   fixedAxis: [0, 0, 1]         # the body turns only about this world direction (non-zero), default free
+///   releaseTime: 1.2             # [s] >= 0: held where it was sampled until then (a weight let go), default 0
 
 #include "core/Types.hpp"
 #include "physics/RunState.hpp"
@@ -47,6 +48,7 @@ public:
     std::array<bool, 3> fixedTranslation{};
     bool fixedRotation = false;
     std::optional<Vec3> fixedAxis; ///< unit vector
+    double releaseTime = 0.0;      ///< [s] held in place before it; its initial velocities apply from then on
   };
 
   /// Reads and validates the rigid-body keys above from a region (its other keys are the caller's; this does not
@@ -57,6 +59,8 @@ public:
   RigidBody(Spec spec, const std::vector<Vec3>& rest, double particleRadius);
 
   const Spec& spec() const { return spec_; }
+  /// Whether the body is still held in place at time t (before its releaseTime): it neither moves nor integrates.
+  bool heldAt(double t) const { return t < spec_.releaseTime; }
   const std::string& name() const { return spec_.name; }
   long long objectId() const { return spec_.objectId; }
   double mass() const { return mass_; }

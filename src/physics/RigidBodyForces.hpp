@@ -2,8 +2,9 @@
 /// The forces fluid and porous particles exert on rigid bodies (physics/RigidBody.hpp): the reaction of the wall
 /// pressure term of Eq. (7) (METHOD.md §6.7), a^p_a += -V_k pi_a gradW_ak for every boundary neighbour k, so
 /// particle a pushes the body's particle k with +m_a V_k pi_a gradW_ak — equal and opposite, momentum is
-/// conserved. Walls add no other force to fluid and porous particles except the optional wall viscosity
-/// (not yet included here). Explicit in the body: the final pi of the step at the positions x^n.
+/// conserved. The contact pressure of compressible solids (physics/WallContact.hpp) acts the same way. The wall
+/// viscosity's reaction comes from the implicit solve (ImplicitTerm::addWallReactions) as forces on the wall
+/// particles. Explicit in the body: the step's final pi and implicit velocities at the positions x^n.
 
 #include "core/Types.hpp"
 #include "physics/StepContext.hpp"
@@ -19,7 +20,10 @@ struct Wrench {
 
 /// One wrench per body: the bodies' particles are boundary particles whose objectId is objectIds[b]; torques are
 /// about centres[b]. A serial sum in a fixed order, so a restarted run sums bit for bit as an uninterrupted one.
+/// `wallForces` (by boundary set, by particle, as ImplicitSolver::wallReactions) adds further forces on the
+/// bodies' particles; empty adds none.
 std::vector<Wrench> rigidBodyWrenches(const StepContext& ctx, const std::vector<long long>& objectIds,
-                                      const std::vector<Vec3>& centres);
+                                      const std::vector<Vec3>& centres,
+                                      const std::vector<std::vector<Vec3>>& wallForces = {});
 
 } // namespace poro

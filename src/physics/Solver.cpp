@@ -9,14 +9,15 @@
 #include "physics/Densities.hpp"
 #include "physics/Elasticity.hpp"
 #include "physics/FieldNames.hpp"
-#include "physics/Viscosity.hpp"
 #include "physics/NumericalHealth.hpp"
 #include "physics/PoreFluidDensityBias.hpp"
 #include "physics/PorousDrag.hpp"
 #include "physics/RigidBodyForces.hpp"
 #include "physics/StartDensity.hpp"
 #include "physics/TimeStepSize.hpp"
+#include "physics/Viscosity.hpp"
 #include "physics/VolumeFactors.hpp"
+#include "physics/WallContact.hpp"
 #include "sph/BoundaryVolume.hpp"
 
 #include <algorithm>
@@ -59,7 +60,7 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
     : particles_(std::move(particles)), fluid_(fluid), materials_(std::move(materials)), settings_(settings),
       control_(control), state_(start), kernel_(particles_.supportRadius()), search_(particles_.supportRadius()),
       implicit_(settings.implicit, makeImplicitTerms()), pressure_(settings.pressure),
-      wallMotions_(std::move(wallMotions)) {
+      wallMotions_(std::move(wallMotions)), flatWallShare_(flatWallShare(kernel_, particles_.spacing())) {
   hasRigidBodies_ = !rigidBodies.empty();
   if (settings_.threads > 0) parallel::setThreads(settings_.threads);
   const double volume = particles_.particleVolume();
@@ -120,10 +121,10 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
                        "); run sampleParticles again (it rewrites 0/) and start from 0");
   }
   setUpRigidBodies(std::move(rigidBodies));
-  noteRigidBodyFriction();
+  implicit_.collectWallReactions(!rigidBodies_.empty());
   placeWalls(state_.time, state_.nextDeltaT);
-  domain_ = settings_.health.domain ? settings_.health.domain
-                                    : wallDomain(particles_, boundarySets_, sweptByRotatingWalls());
+  domain_ =
+      settings_.health.domain ? settings_.health.domain : wallDomain(particles_, boundarySets_, sweptByRotatingWalls());
   checkStartPositions();
 }
 
@@ -173,9 +174,8 @@ void Solver::checkStartDensity() {
 
 void Solver::setTimeControl(const TimeControl& control) {
   control_ = control;
-  state_.nextDeltaT = control_.adjustTimeStep
-                          ? std::clamp(state_.nextDeltaT, control_.minDeltaT, control_.maxDeltaT)
-                          : control_.deltaT;
+  state_.nextDeltaT =
+      control_.adjustTimeStep ? std::clamp(state_.nextDeltaT, control_.minDeltaT, control_.maxDeltaT) : control_.deltaT;
 }
 
 void Solver::setUpBoundarySet(ParticleSet& set) {
@@ -217,9 +217,10 @@ void Solver::placeWalls(double t, double deltaT) {
   for (std::size_t b = 0; b < rigidBodies_.size(); ++b) { // a body's pose drives its particles as a wall's
     const RigidBody& body = rigidBodies_[b];
     const RigidBodyState& s = state_.rigidBodies[b];
+    const bool held = body.heldAt(t);
     drive(
         body.objectId(), [&](const Vec3& X) { return body.place(s, X); },
-        [&](const Vec3& X) { return body.chordVelocity(s, X, deltaT); });
+        [&](const Vec3& X) { return held ? Vec3(Vec3::Zero()) : body.chordVelocity(s, X, deltaT); });
   }
 }
 
@@ -248,15 +249,6 @@ void Solver::setUpRigidBodies(std::vector<RigidBody::Spec> specs) {
   }
 }
 
-void Solver::noteRigidBodyFriction() const {
-  bool friction = fluid_.boundaryViscosity > 0.0;
-  for (const PorousMaterial& m : materials_) friction = friction || m.boundaryDampingViscosity > 0.0;
-  if (rigidBodies_.empty() || !friction) return;
-  log::warning("rigid bodies take the reaction of the wall pressure only: the wall viscosity (boundaryViscosity, "
-               "boundaryDampingViscosity > 0) slows fluid and porous particles at their faces without pulling "
-               "the bodies along, so momentum is not conserved there");
-}
-
 void Solver::moveRigidBodies(const StepContext& ctx, double deltaT) {
   if (rigidBodies_.empty()) return;
   std::vector<long long> objects;
@@ -265,10 +257,11 @@ void Solver::moveRigidBodies(const StepContext& ctx, double deltaT) {
     objects.push_back(rigidBodies_[b].objectId());
     centres.push_back(state_.rigidBodies[b].centre);
   }
-  const std::vector<Wrench> wrenches = rigidBodyWrenches(ctx, objects, centres);
+  const std::vector<Wrench> wrenches = rigidBodyWrenches(ctx, objects, centres, implicit_.wallReactions());
   for (std::size_t b = 0; b < rigidBodies_.size(); ++b)
-    rigidBodies_[b].integrate(state_.rigidBodies[b], wrenches[b].force + rigidBodies_[b].mass() * fluid_.gravity,
-                              wrenches[b].torque, deltaT);
+    if (!rigidBodies_[b].heldAt(state_.time))
+      rigidBodies_[b].integrate(state_.rigidBodies[b], wrenches[b].force + rigidBodies_[b].mass() * fluid_.gravity,
+                                wrenches[b].torque, deltaT);
 }
 
 std::vector<Domain> Solver::sweptByRotatingWalls() const {
@@ -307,13 +300,16 @@ void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
   auto& fixed = set.addInt(field::fixed, Restart);
   auto& rest = set.addVec3(field::restPosition, Restart);
   if (material.youngsModulus > 0.0) Elasticity::registerFields(set);
+  if (material.compressible) registerWallContactFields(set);
   // The rest state is the sampled one: X = x at step 0, read back from the time directory afterwards.
   if (state_.step == 0) rest = set.x();
   if (state_.step == 0) { // 0/ is rewritten at step 0: fixedBox must not stick to it, an edited one applies anew
     const bool rewritten = set.has(field::sampledFixed);
     auto& sampled = set.addInt(field::sampledFixed, Restart);
-    if (rewritten) fixed = sampled;
-    else sampled = fixed;
+    if (rewritten)
+      fixed = sampled;
+    else
+      sampled = fixed;
   }
   if (material.fixedBox) { // strictly inside the material's fixedBox at X (METHOD.md §4.2)
     const auto& [lo, hi] = *material.fixedBox;
@@ -323,9 +319,17 @@ void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
 }
 
 StepContext Solver::context(double deltaT) {
-  return StepContext{particles_,    search_,      gradients_,    kernel_,
-                     fluid_,        deltaT,       dynamicSets_,  boundarySets_,
-                     setMaterials_, settings_.compatibility, state_.lastDeltaT,
+  return StepContext{particles_,
+                     search_,
+                     gradients_,
+                     kernel_,
+                     fluid_,
+                     deltaT,
+                     dynamicSets_,
+                     boundarySets_,
+                     setMaterials_,
+                     settings_.compatibility,
+                     state_.lastDeltaT,
                      poreFluidBias_ ? &*poreFluidBias_ : nullptr};
 }
 
@@ -353,6 +357,7 @@ StepContext Solver::beginStep(double deltaT) {
   {
     ScopedPhase phase(phases_, "densities");
     computeDensities(ctx, gradients_);
+    initialiseWallContactLimits(ctx, flatWallShare_);
   }
   return ctx;
 }
@@ -542,7 +547,9 @@ void Solver::checkHealth(const Writer& write) {
         removeParticles(particles_, outside);
         log::warning(msg.str() + " (health.leavingDomain remove: they are deleted).");
         break;
-      case HealthAction::Stop: stopAfterWriting(write, msg.str() + " (health.leavingDomain stop)."); break;
+      case HealthAction::Stop:
+        stopAfterWriting(write, msg.str() + " (health.leavingDomain stop).");
+        break;
       }
     }
   }

@@ -27,8 +27,8 @@ struct StepReport {
   double deltaT = 0.0;
   PressureStats pressure;
   linalg::CgResult implicit;
-  double maxSpeed = 0.0; ///< largest particle speed, or prescribed wall speed within the next step [m/s]
-  double maxFluidDensity = 0.0; ///< largest fluid rho~ = rho^/rho_f^0 at the start of the step (Eq. 4)
+  double maxSpeed = 0.0;            ///< largest particle speed, or prescribed wall speed within the next step [m/s]
+  double maxFluidDensity = 0.0;     ///< largest fluid rho~ = rho^/rho_f^0 at the start of the step (Eq. 4)
   double maxPoreFluidDensity = 0.0; ///< the same over fluid particles with porous neighbours
 };
 
@@ -60,8 +60,8 @@ public:
   using Observer = std::function<void(const Solver&)>;
   /// Advances to endTime, logging progress per step and calling `write` at every write time. A run from step 0
   /// first logs the densest particles and throws InputError above health.startDensity (physics/StartDensity.hpp).
-  /// SIGINT, SIGTERM or SIGHUP (core/StopSignals.hpp) and stopAt end the run after the current step. After each step the
-  /// health checks of solverDict run; a failed check with policy stop writes the last good state and throws
+  /// SIGINT, SIGTERM or SIGHUP (core/StopSignals.hpp) and stopAt end the run after the current step. After each step
+  /// the health checks of solverDict run; a failed check with policy stop writes the last good state and throws
   /// NumericalError naming the particles, where they are and what to change.
   /// At step 0: computes the start's densities and refuses a start denser than health.startDensity (an
   /// InputError naming the particles). Call it before anything is written; run() calls it if it was not.
@@ -116,8 +116,6 @@ private:
   void setUpRigidBodies(std::vector<RigidBody::Spec> specs);
   /// Newton-Euler step of every rigid body under the reactions of the pressure forces of this step and gravity.
   void moveRigidBodies(const StepContext& ctx, double deltaT);
-  /// Warns that the wall viscosities' reactions are not yet applied to rigid bodies.
-  void noteRigidBodyFriction() const;
   /// The boxes of the circles the particles of rotating walls run on, for the default domain.
   std::vector<Domain> sweptByRotatingWalls() const;
 
@@ -136,13 +134,14 @@ private:
   ImplicitSolver implicit_;
   PressureSolver pressure_;
   std::vector<ObjectMotion> wallMotions_;
+  double flatWallShare_; ///< D of a particle resting on a flat wall (WallContact.hpp)
   bool hasRigidBodies_ = false;
   std::vector<RigidBody> rigidBodies_; ///< their states are in state_.rigidBodies, same order
   std::vector<double> wallReach_;      ///< by motion: largest distance of its body's particles from its axis [m]
   StepReport report_;
   PhaseTimes phases_;
-  StateSnapshot snapshot_;         ///< before the current step: undoes a step that ends in NaN
-  std::optional<Domain> domain_;   ///< particles outside it fail the leaving-domain check
+  StateSnapshot snapshot_;          ///< before the current step: undoes a step that ends in NaN
+  std::optional<Domain> domain_;    ///< particles outside it fail the leaving-domain check
   std::size_t outsideReported_ = 0; ///< particles outside the domain already warned about (policy warn)
   long long lastWrittenStep_ = -1;
   bool startChecked_ = false; ///< checkStart() ran (main calls it before anything is written)

@@ -144,6 +144,31 @@ void Viscosity::addDiagonal(const linalg::BlockDiagonal& d) const {
   }
 }
 
+void Viscosity::addWallReactions(const linalg::BlockVector& u, std::vector<std::vector<Vec3>>& forces) const {
+  const StepContext& ctx = *ctx_;
+  for (const Member& member : members_) {
+    const auto& x = ctx.particles[member.set].x();
+    const Vec3* uf = u[member.part].data;
+    for (std::size_t w = 0; w < ctx.boundarySets.size(); ++w) {
+      const std::size_t k = ctx.boundarySets[w];
+      const NeighbourList& list = ctx.search.list(member.set, k);
+      const auto& xk = ctx.particles[k].x();
+      const auto& vk = ctx.particles[k].v();
+      const auto& coefficient = member.wallCoefficient[w];
+      auto& out = forces[w];
+      // Serial and in a fixed order: several particles pull one wall particle, and restarts must sum alike.
+      for (std::size_t i = 0; i < u[member.part].size; ++i) {
+        std::size_t q = list.offset(i);
+        for (Index kk : list.of(i)) {
+          const std::size_t c = static_cast<std::size_t>(kk);
+          const Vec3 xik = x[i] - xk[c];
+          out[c] -= (coefficient[q++] * (uf[i] - vk[c]).dot(xik)) * xik;
+        }
+      }
+    }
+  }
+}
+
 void Viscosity::addRhs(const linalg::BlockVector& b) const {
   const StepContext& ctx = *ctx_;
   const double dt = ctx.dt;

@@ -23,6 +23,8 @@ public:
   void addApply(const linalg::BlockVector& u, const linalg::BlockVector& au) const override;
   void addDiagonal(const linalg::BlockDiagonal& d) const override;
   void addRhs(const linalg::BlockVector& b) const override;
+  /// The wall term's reaction: particle a pulls wall particle k with -kappa_ak s_ak ((u_a - v_k).x_ak) x_ak.
+  void addWallReactions(const linalg::BlockVector& u, std::vector<std::vector<Vec3>>& forces) const override;
 
 private:
   /// One viscous set: the fluid, or a porous material with damping.

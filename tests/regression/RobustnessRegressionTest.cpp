@@ -87,6 +87,21 @@ TEST(RunTimeModifiable, EndTimeAndWriteIntervalTakeEffectWhileRunning) {
   }
 }
 
+TEST(CaseLock, SamplingACaseWhilePoroSphRunsOnItIsRefusedAndTheRunGoesOn) {
+  // sampleParticles would rewrite 0/ and case.pvd under a running solver (io/CaseLock.hpp).
+  CaseRunner runner("fluid/hydrostaticTank");
+  makeCoarseTank(runner, "0.02", "0.01");
+  const pid_t pid = startAndPause(runner, 5);
+  EXPECT_EQ(runner.sample(), 1);
+  const std::string refused = runner.read("log.sampleParticles");
+  EXPECT_NE(refused.find("another program is writing this case (poroSph, pid " + std::to_string(pid) + ")"),
+            std::string::npos)
+      << refused;
+  ASSERT_EQ(resumeAndWait(pid), 0) << runner.read("log.poroSph");
+  EXPECT_TRUE(hasTime(listTimeDirectories(runner.dir()), 0.02));
+  EXPECT_EQ(runner.sample(), 0) << runner.read("log.sampleParticles"); // the lock went with the solver
+}
+
 TEST(RunTimeModifiable, StopAtWriteNowEndsTheRunWritten) {
   CaseRunner runner("fluid/hydrostaticTank");
   makeCoarseTank(runner, "100", "50");

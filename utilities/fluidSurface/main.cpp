@@ -7,6 +7,7 @@
 #include "core/Log.hpp"
 #include "core/Parallel.hpp"
 #include "core/Timer.hpp"
+#include "io/CaseLock.hpp"
 #include "io/PvdSeries.hpp"
 #include "io/TimeDirectory.hpp"
 #include "surface/SurfaceFile.hpp"
@@ -75,6 +76,7 @@ int main(int argc, char* argv[]) try {
   }
   const fs::path caseDir = args.caseDir();
   if (!fs::is_directory(caseDir)) throw InputError(caseDir.string() + ": case directory not found");
+  const CaseLock lock(caseDir, "fluidSurface"); // it writes into time directories and case.pvd
   if (args.threads() > 0) parallel::setThreads(args.threads());
 
   const AnalysisSettings analysis = readAnalysisSettings(caseDir);
@@ -109,13 +111,13 @@ int main(int argc, char* argv[]) try {
     line << "Time " << time.name << ":";
     const double r = particles.particleRadius();
     if (settings.writeFluid)
-      line << "\n  " << makeSurface(fluidCloud(particles, settings), settings.fluid, r, caseDir, time,
-                                    kFluidSurfaceFile, series);
+      line << "\n  "
+           << makeSurface(fluidCloud(particles, settings), settings.fluid, r, caseDir, time, kFluidSurfaceFile, series);
     bool porous = false;
     for (std::size_t s = 0; s < particles.size(); ++s) porous = porous || particles[s].kind() == SetKind::Porous;
     if (settings.writePorous && porous)
-      line << "\n  " << makeSurface(porousCloud(particles), settings.porous, r, caseDir, time, kPorousSurfaceFile,
-                                    series);
+      line << "\n  "
+           << makeSurface(porousCloud(particles), settings.porous, r, caseDir, time, kPorousSurfaceFile, series);
     line << "\n  " << std::setprecision(3) << timer.seconds() << " s with reading and writing";
     log::info(line.str());
     series.write(pvd); // after every time: what is done stays listed if the run is stopped

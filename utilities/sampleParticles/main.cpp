@@ -8,6 +8,7 @@
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "io/CaseLock.hpp"
 #include "io/CaseReader.hpp"
 #include "io/SamplingRecord.hpp"
 #include "io/TimeDirectory.hpp"
@@ -61,6 +62,7 @@ int main(int argc, char* argv[]) try {
   }
   const fs::path caseDir = args.caseDir();
   if (!fs::is_directory(caseDir)) throw InputError(caseDir.string() + ": case directory not found");
+  const CaseLock lock(caseDir, "sampleParticles"); // it rewrites 0/ and case.pvd
   const std::string dictPath = (caseDir / "system" / "particleDict").string();
   const std::vector<PorousMaterial> materials = readPorousMaterials(caseDir);
   const Dictionary particleDict = Dictionary::read(dictPath);
