@@ -2,7 +2,9 @@
 ///   - NeighbourSearch::update for the fluid->fluid list, the fluid->boundary list and both (what
 ///     Solver::step asks for);
 ///   - computeDensities, PressureSolver::predictDensities and PressureSolver::solve with a fixed number of
-///     Jacobi sweeps (minIterations = maxIterations), on fields prepared by one Solver::step.
+///     Jacobi sweeps (minIterations = maxIterations), on fields prepared by one Solver::step;
+///   - the 3x3 outer-product sum of the pair loops (viscosity, drag and elastic blocks): Eigen's expression
+///     against addOuter (core/Types.hpp), over 40 pairs as one particle has.
 /// Every benchmark takes the OpenMP thread count as its first argument. items_per_second counts fluid
 /// particles processed (for the pressure solve: fluid particles x sweeps). Wall time is what is reported
 /// (UseRealTime), since the work runs on OpenMP threads.
@@ -29,9 +31,9 @@ using namespace poro;
 
 namespace {
 
-constexpr double kRadius = 0.005;   ///< particle radius r [m]
-constexpr double kDeltaT = 0.0005;  ///< step size of the preparing step [s] (the damBreak tutorial's deltaT)
-constexpr double kJitter = 0.1;     ///< jitter amplitude per coordinate [r]
+constexpr double kRadius = 0.005;  ///< particle radius r [m]
+constexpr double kDeltaT = 0.0005; ///< step size of the preparing step [s] (the damBreak tutorial's deltaT)
+constexpr double kJitter = 0.1;    ///< jitter amplitude per coordinate [r]
 
 /// SplitMix64: a fixed, platform-independent hash, so the jitter is the same on every machine.
 std::uint64_t splitMix64(std::uint64_t z) {
@@ -160,8 +162,8 @@ struct PressureScene {
   FluidProperties fluid;
   CubicKernel kernel{4.0 * kRadius};
   std::unique_ptr<StepContext> ctx;
-  std::vector<Vec3> v0;   ///< fluid velocities before a solve (solve adds dt a^p to them)
-  std::vector<Real> pi0;  ///< pi before a solve (the warm start)
+  std::vector<Vec3> v0;  ///< fluid velocities before a solve (solve adds dt a^p to them)
+  std::vector<Real> pi0; ///< pi before a solve (the warm start)
   std::size_t fluidCount = 0;
 
   PressureScene() {
@@ -246,11 +248,40 @@ void BM_PressureSolve(benchmark::State& state) {
   state.counters["error%"] = stats.meanError;
 }
 
+/// sum_p c_p a_p b_p^T over 40 pairs, the shape of a diagonal block or a deformation gradient.
+struct OuterProductPairs {
+  std::vector<Vec3> a, b;
+  std::vector<double> c;
+  OuterProductPairs() {
+    for (std::uint64_t p = 0; p < 40; ++p) {
+      const auto u = [&](std::uint64_t k) { return static_cast<double>(splitMix64(6 * p + k) >> 11) * 0x1.0p-53; };
+      a.emplace_back(u(0), u(1), u(2));
+      b.emplace_back(u(3), u(4), u(5));
+      c.push_back(u(0) - 0.5);
+    }
+  }
+};
+
+void BM_OuterProductSum(benchmark::State& state) {
+  const OuterProductPairs pairs;
+  const bool eigenExpression = state.range(0) == 0;
+  for (auto _ : state) {
+    Mat3 m = Mat3::Zero();
+    for (std::size_t p = 0; p < pairs.a.size(); ++p) {
+      if (eigenExpression)
+        m += pairs.c[p] * (pairs.a[p] * pairs.b[p].transpose());
+      else
+        addOuter(m, pairs.c[p] * pairs.a[p], pairs.b[p]);
+    }
+    benchmark::DoNotOptimize(m);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pairs.a.size()));
+  state.SetLabel(eigenExpression ? "m += c * (a * b.transpose())" : "addOuter(m, c * a, b)");
+}
+
+BENCHMARK(BM_OuterProductSum)->ArgName("addOuter")->Arg(0)->Arg(1);
 BENCHMARK(BM_Densities)->Apply(threadCounts);
 BENCHMARK(BM_PredictDensities)->Apply(threadCounts);
-BENCHMARK(BM_PressureSolve)
-    ->ArgNames({"threads", "sweeps"})
-    ->ArgsProduct({{1, 2}, {1, 10}})
-    ->Apply(timing);
+BENCHMARK(BM_PressureSolve)->ArgNames({"threads", "sweeps"})->ArgsProduct({{1, 2}, {1, 10}})->Apply(timing);
 
 } // namespace

@@ -22,8 +22,9 @@ Mat3 stressOf(const Mat3& eps, double shear, double volumetric) {
 
 /// B(g) = shear (|g|^2 I + g g^T) + volumetric g g^T: the block a stress couples back onto one velocity.
 Mat3 stiffnessBlock(const Vec3& g, double shear, double volumetric) {
-  const Mat3 outer = g * g.transpose();
-  return shear * (g.squaredNorm() * Mat3::Identity() + outer) + volumetric * outer;
+  Mat3 block = (shear * g.squaredNorm()) * Mat3::Identity();
+  addOuter(block, (shear + volumetric) * g, g);
+  return block;
 }
 } // namespace
 
@@ -80,7 +81,7 @@ void Elasticity::prepareBody(const StepContext& ctx, Body& body) {
     Mat3 deformed = Mat3::Zero(), displaced = Mat3::Zero();
     for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
       const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
-      deformed += rest.volume(t) * (x[t] - x[s]) * rest.restGradient(pair).transpose();
+      addOuter(deformed, rest.volume(t) * (x[t] - x[s]), rest.restGradient(pair));
     }
     const Mat3& correction = rest.correction(s);
     rotation[s] = extractRotation(deformed * correction.transpose(), rotation[s]);
@@ -88,7 +89,7 @@ void Elasticity::prepareBody(const StepContext& ctx, Body& body) {
     for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
       const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
       const Vec3 offset = (x[t] - x[s]) - rotation[s] * (restX[t] - restX[s]);
-      displaced += rest.volume(t) * offset * rest.restGradient(pair).transpose();
+      addOuter(displaced, rest.volume(t) * offset, rest.restGradient(pair));
     }
     const double sat = saturation[s];
     body.shear[s] = std::max(1.0 + material.shearSoftening * sat, kLameFloor) * mu;
@@ -130,7 +131,7 @@ void Elasticity::addApply(const linalg::BlockVector& u, const linalg::BlockVecto
       Mat3 gradient = Mat3::Zero();
       for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
         const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
-        gradient += rest.volume(t) * (v[t] - v[s]) * rest.restGradient(pair).transpose();
+        addOuter(gradient, rest.volume(t) * (v[t] - v[s]), rest.restGradient(pair));
       }
       const Mat3& rl = body.rotatedCorrection[s];
       const Mat3 eps = symmetric(dt * gradient * rl.transpose());

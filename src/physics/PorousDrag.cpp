@@ -104,7 +104,7 @@ void PorousDrag::addDiagonal(const linalg::BlockDiagonal& d) const {
       std::size_t q = list.offset(a);
       for (Index bIndex : list.of(a)) {
         const Vec3 xab = xa[a] - xb[static_cast<std::size_t>(bIndex)];
-        block += side.pairCoefficient[q++] * (xab * xab.transpose());
+        addOuter(block, side.pairCoefficient[q++] * xab, xab);
       }
       out[a] -= dt * block;
     });

@@ -128,7 +128,7 @@ void Viscosity::addDiagonal(const linalg::BlockDiagonal& d) const {
       std::size_t p = same.offset(i);
       for (Index j : same.of(i)) {
         const Vec3 xij = x[i] - x[static_cast<std::size_t>(j)];
-        block += member.pairCoefficient[p++] * (xij * xij.transpose());
+        addOuter(block, member.pairCoefficient[p++] * xij, xij);
       }
       for (std::size_t w = 0; w < ctx.boundarySets.size(); ++w) {
         const NeighbourList& list = ctx.search.list(member.set, ctx.boundarySets[w]);
@@ -136,7 +136,7 @@ void Viscosity::addDiagonal(const linalg::BlockDiagonal& d) const {
         std::size_t q = list.offset(i);
         for (Index k : list.of(i)) {
           const Vec3 xik = x[i] - xk[static_cast<std::size_t>(k)];
-          block += member.wallCoefficient[w][q++] * (xik * xik.transpose());
+          addOuter(block, member.wallCoefficient[w][q++] * xik, xik);
         }
       }
       out[i] -= dt * block;
