@@ -37,7 +37,7 @@ int main(int argc, char* argv[]) try {
   banner << "Case: " << args.caseDir() << "\nStarting from time " << simulation.startName << " with "
          << simulation.particles.particleCount() << " particles";
   log::info(banner.str());
-  const bool movingWalls = !simulation.wallMotions.empty() || !simulation.rigidBodies.empty();
+  const bool movingWalls = !simulation.wallMotions.empty(); // rigid bodies have rigid.vtp of their own
   Solver solver(std::move(simulation.particles), simulation.fluid, std::move(simulation.materials), simulation.solver,
                 simulation.control, simulation.start, std::move(simulation.wallMotions),
                 std::move(simulation.rigidBodies));

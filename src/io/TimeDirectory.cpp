@@ -39,17 +39,24 @@ bool isTimeName(const std::string& name, double& value) {
   return end && *end == '\0' && std::isfinite(value);
 }
 
-/// The particle files of a time directory: fluid.vtp, porous.vtp (every porous material) and boundary.vtp.
+/// The particle files of a time directory: fluid.vtp, porous.vtp (every porous material), boundary.vtp (walls) and
+/// rigid.vtp (rigid bodies).
 bool isParticleFile(const fs::path& file) {
   const std::string stem = file.stem().string();
-  return file.extension() == ".vtp" && (stem == "fluid" || stem == kPorousSetName || stem == "boundary");
+  return file.extension() == ".vtp" &&
+         (stem == "fluid" || stem == kPorousSetName || stem == "boundary" || stem == kRigidSetName);
 }
 
 SetKind kindOfFile(const fs::path& file) {
   const std::string stem = file.stem().string();
   if (stem == "fluid") return SetKind::Fluid;
-  if (stem == "boundary") return SetKind::Boundary;
+  if (stem == "boundary" || stem == kRigidSetName) return SetKind::Boundary;
   return SetKind::Porous;
+}
+
+/// ParticleSystem order (METHOD.md §1): fluid, porous, walls, rigid bodies - the same for every run and restart.
+int rankOfFile(const fs::path& file) {
+  return 2 * static_cast<int>(kindOfFile(file)) + (file.stem().string() == kRigidSetName ? 1 : 0);
 }
 
 std::string formatExact(double value) {
@@ -65,7 +72,7 @@ std::vector<std::pair<std::string, const ParticleSet*>> filesOf(const ParticleSy
   std::vector<std::pair<std::string, const ParticleSet*>> files;
   for (std::size_t s = 0; s < particles.size(); ++s) {
     const ParticleSet& set = particles[s];
-    if (set.kind() == SetKind::Boundary && !withBoundaries) continue;
+    if (set.kind() == SetKind::Boundary && !withBoundaries && set.name() != kRigidSetName) continue;
     if (set.kind() != SetKind::Porous) {
       files.emplace_back(set.name(), &set);
     } else if (!merged) {
@@ -167,7 +174,10 @@ void writeSamplingRecord(const fs::path& dir, const std::string& record) {
 }
 
 const char* fileOfPhase(const std::string& phase) {
-  return phase == "fluid" ? "fluid.vtp" : phase == "porous" ? "porous.vtp" : "boundary.vtp";
+  return phase == "fluid"    ? "fluid.vtp"
+         : phase == "porous" ? "porous.vtp"
+         : phase == "rigid"  ? "rigid.vtp"
+                             : "boundary.vtp";
 }
 
 /// The case's system/particleDict when it can be read, for cross-checks against the particle files (without it,
@@ -218,7 +228,7 @@ void checkPhasesPresent(const fs::path& caseDir, const fs::path& dir, const std:
     } catch (const InputError&) {
       continue;
     }
-    if (phase != "fluid" && phase != "porous" && phase != "boundary") continue;
+    if (phase != "fluid" && phase != "porous" && phase != "boundary" && phase != "rigid") continue;
     const std::string file = fileOfPhase(phase);
     if (fs::exists(dir / file) || (phase == "boundary" && fs::exists(caseDir / "0" / file))) continue;
     if (phase == "boundary" && dir.filename() != "0") { // a restart: walls that stand still live in 0/ only
@@ -324,9 +334,9 @@ RunState readRunState(const fs::path& timeDir) {
   RunState state;
   state.time = dict.getReal("time", Range::nonNegative());
   state.step = dict.getInt("step", Range::nonNegative());
-  state.nextDeltaT = dict.getReal("deltaT", Range::nonNegative()); // 0: take controlDict deltaT
+  state.nextDeltaT = dict.getReal("deltaT", Range::nonNegative());          // 0: take controlDict deltaT
   state.lastDeltaT = dict.getReal("lastDeltaT", 0.0, Range::nonNegative()); // 0: none (also older directories)
-  dict.getReal("particleRadius", 0.0, Range::positive());          // checked against particleDict by readParticles
+  dict.getReal("particleRadius", 0.0, Range::positive()); // checked against particleDict by readParticles
   dict.checkUnknownKeys();
   const fs::path bodies = timeDir / "uniform" / "rigidBodies";
   if (fs::exists(bodies))
@@ -345,8 +355,9 @@ PvdSeries seriesOfTimeDirectories(const fs::path& caseDir) {
   PvdSeries series;
   const std::string porous = std::string(kPorousSetName) + ".vtp";
   for (const TimeDirectoryEntry& time : listTimeDirectories(caseDir))
-    for (const std::string& file : {std::string("fluid.vtp"), porous, std::string("boundary.vtp"),
-                                   std::string(kFluidSurfaceFile), std::string(kPorousSurfaceFile)})
+    for (const std::string& file :
+         {std::string("fluid.vtp"), porous, std::string("boundary.vtp"), std::string(kRigidSetName) + ".vtp",
+          std::string(kFluidSurfaceFile), std::string(kPorousSurfaceFile)})
       if (fs::exists(caseDir / time.name / file))
         series.add(time.time, fs::path(file).stem().string(), time.name + "/" + file);
   return series;
@@ -365,14 +376,14 @@ ParticleSystem readParticles(const fs::path& caseDir, const std::string& name, d
     if (!isParticleFile(entry.path()))
       throw InputError(entry.path().string() +
                        ": not a particle file of a time directory; expected fluid.vtp, porous.vtp (all porous "
-                       "materials) and boundary.vtp only; move the file elsewhere");
+                       "materials), boundary.vtp and rigid.vtp only; move the file elsewhere");
     files.push_back(entry.path());
   }
   if (!fs::exists(dir / "boundary.vtp") && fs::exists(caseDir / "0" / "boundary.vtp"))
     files.push_back(caseDir / "0" / "boundary.vtp");
-  // Fluid first, then porous sets in material order, boundaries last (ParticleSystem order, METHOD.md §1).
-  auto rank = [](const fs::path& p) { return static_cast<int>(kindOfFile(p)); };
-  std::sort(files.begin(), files.end(), [&](const fs::path& a, const fs::path& b) { return rank(a) < rank(b); });
+  // Fluid first, then porous sets in material order, walls, rigid bodies last (ParticleSystem order, METHOD.md §1).
+  std::sort(files.begin(), files.end(),
+            [&](const fs::path& a, const fs::path& b) { return rankOfFile(a) < rankOfFile(b); });
   const std::optional<Dictionary> particleDict = readParticleDict(caseDir);
   checkRadius(dir, particleDict, particleRadius);
   checkPhasesPresent(caseDir, dir, particleDict);
@@ -425,8 +436,9 @@ TimeWriter::TimeWriter(fs::path caseDir, const OutputSettings& settings, const s
 void TimeWriter::write(const ParticleSystem& particles, const RunState& state) {
   const std::string name = timeName(state.time);
   std::vector<std::string> parts;
-  // Static walls live in the start directory 0/ only, so rewriting 0/ (step 0) writes them too.
-  const bool withBoundaries = movingWalls_ || state.step == 0 || !state.rigidBodies.empty();
+  // Static walls live in the start directory 0/ only, so rewriting 0/ (step 0) writes them too; rigid.vtp is
+  // written every time.
+  const bool withBoundaries = movingWalls_ || state.step == 0;
   writeDirectoryAtomically(caseDir_, name, [&](const fs::path& dir) {
     parts = writeSets(dir, particles, withBoundaries, settings_.binary);
     writeRunState(dir, state, particles.particleRadius());
@@ -445,9 +457,12 @@ void recoverInterruptedWrites(const fs::path& caseDir) {
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(caseDir, ec)) {
     const std::string name = entry.path().filename().string();
-    if (entry.is_directory() && !timeOfTemporary(name, ".tmp").empty()) unfinished.push_back(entry.path());
-    else if (entry.is_directory() && !timeOfTemporary(name, ".old").empty()) replaced.push_back(entry.path());
-    else if (entry.is_regular_file() && isStalePvdTemporary(name)) stale.push_back(entry.path());
+    if (entry.is_directory() && !timeOfTemporary(name, ".tmp").empty())
+      unfinished.push_back(entry.path());
+    else if (entry.is_directory() && !timeOfTemporary(name, ".old").empty())
+      replaced.push_back(entry.path());
+    else if (entry.is_regular_file() && isStalePvdTemporary(name))
+      stale.push_back(entry.path());
   }
   for (const auto& path : unfinished) {
     fs::remove_all(path, ec);

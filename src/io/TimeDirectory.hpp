@@ -18,6 +18,9 @@ namespace poro {
 
 /// Surfaces that utilities/fluidSurface adds to a time directory (and to case.pvd, named by their stem). They are
 /// derived from the particles, so readParticles skips them and a restart is unaffected by them.
+/// The boundary set of rigid bodies' particles (phase: rigid), written to rigid.vtp at every time: the bodies move,
+/// while static walls stay in 0/boundary.vtp.
+inline constexpr const char* kRigidSetName = "rigid";
 inline constexpr const char* kFluidSurfaceFile = "fluidSurface.vtp";
 inline constexpr const char* kPorousSurfaceFile = "porousSurface.vtp";
 
@@ -40,11 +43,11 @@ RunState readRunState(const std::filesystem::path& timeDir);
 /// `0/boundary.vtp` when the directory has no boundary of its own), in ParticleSystem order. `fluid` and
 /// `boundary` name the fluid and wall sets; porous.vtp is split by its materialId into one set per material
 /// of `materials` (constant/porosityProperties order), named after the material (splitPorousSet). The surfaces
-/// above are skipped; any other .vtp file in the directory, a missing fluid.vtp and a porous.vtp the materials cannot split are InputErrors,
-/// and so are a file without the array 'id' or with two particles of the same id, a `particleRadius` other than
-/// the one uniform/time records, when the case has a readable system/particleDict, a missing file of a phase its
-/// regions sample (a deleted boundary.vtp or porous.vtp), and a materialId that names another material than the one
-/// uniform/sampling records it was sampled as (checkSampledMaterials).
+/// above are skipped; any other .vtp file in the directory, a missing fluid.vtp and a porous.vtp the materials cannot
+/// split are InputErrors, and so are a file without the array 'id' or with two particles of the same id, a
+/// `particleRadius` other than the one uniform/time records, when the case has a readable system/particleDict, a
+/// missing file of a phase its regions sample (a deleted boundary.vtp or porous.vtp), and a materialId that names
+/// another material than the one uniform/sampling records it was sampled as (checkSampledMaterials).
 ParticleSystem readParticles(const std::filesystem::path& caseDir, const std::string& timeName, double particleRadius,
                              const std::vector<PorousMaterial>& materials);
 
@@ -63,10 +66,11 @@ public:
   /// Starts the series at the time directory `startName` (entries after it are dropped from case.pvd).
   TimeWriter(std::filesystem::path caseDir, const OutputSettings& settings, const std::string& startName);
 
-  /// Writes `<t>/` for the dynamic sets (fluid.vtp, porous.vtp), with moving walls or at step 0 also boundary.vtp, and
-  /// uniform/time (and uniform/sampling when the start time directory has it), atomically, then case.pvd (one part
-  /// per file: "fluid", "porous", "boundary") and purgeWrite. When `<t>/` existed (a run again from 0 rewrites 0/),
-  /// case.pvd's entries of t whose files the rewrite removed (fluidSurface.vtp, porousSurface.vtp) are dropped.
+  /// Writes `<t>/` for the dynamic sets (fluid.vtp, porous.vtp) and rigid bodies (rigid.vtp), with moving walls or at
+  /// step 0 also boundary.vtp, and uniform/time (and uniform/sampling when the start time directory has it),
+  /// atomically, then case.pvd (one part per file: "fluid", "porous", "boundary", "rigid") and purgeWrite. When `<t>/`
+  /// existed (a run again from 0 rewrites 0/), case.pvd's entries of t whose files the rewrite removed
+  /// (fluidSurface.vtp, porousSurface.vtp) are dropped.
   void write(const ParticleSystem& particles, const RunState& state);
   /// Walls move (prescribed motion): every time directory gets boundary.vtp, which a restart reads back.
   void setMovingWalls(bool moving) { movingWalls_ = moving; }

@@ -12,7 +12,7 @@ namespace poro {
 namespace {
 
 /// Names that already mean a particle set and a file of a time directory (fluid.vtp, boundary.vtp).
-const char* const kReservedNames[] = {"fluid", "boundary"};
+const char* const kReservedNames[] = {"fluid", "boundary", "rigid"};
 
 bool isIdentifier(const std::string& name) {
   if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_')) return false;

@@ -55,7 +55,7 @@ TEST(Restart, StoppedAndRestartedRunMatchesUninterruptedRun) {
 
 TEST(Restart, RigidBodyContinuesBitForBit) {
   // The floating box (tutorials/rigid/floatingBox) splashing into the pool: its pose and momenta go through
-  // uniform/rigidBodies and its particles through boundary.vtp; the restarted run matches the straight one.
+  // uniform/rigidBodies and its particles through rigid.vtp; the restarted run matches the straight one.
   CaseRunner straight("rigid/floatingBox");
   straight.setKey("system/controlDict", "endTime", "0.16");
   ASSERT_EQ(straight.sample(), 0);
@@ -77,6 +77,10 @@ TEST(Restart, RigidBodyContinuesBitForBit) {
   const ParticleSystem b = split.particles("0.16", 0.01);
   expectIdentical(*a.find("fluid"), *b.find("fluid"));
   expectIdentical(*a.find("boundary"), *b.find("boundary"));
+  expectIdentical(*a.find("rigid"), *b.find("rigid"));
+  // The tank stands still: it stays in 0/boundary.vtp, and only the box's particles are written at every time.
+  EXPECT_TRUE(std::filesystem::exists(straight.dir() / "0.16" / "rigid.vtp"));
+  EXPECT_FALSE(std::filesystem::exists(straight.dir() / "0.16" / "boundary.vtp"));
   // By 0.16 s the box has fallen into the water: the test compares a moving body.
   const std::string first = straight.read("0.02/uniform/rigidBodies");
   EXPECT_NE(first, bodies);

@@ -86,9 +86,9 @@ int main(int argc, char* argv[]) try {
       porous[m]->addInt(field::fixed, Restart);
     }
   ParticleSet* boundary =
-      hasRegion(dict, ParticleRegion::Phase::Boundary) || hasRegion(dict, ParticleRegion::Phase::Rigid)
-          ? &particles.add("boundary", SetKind::Boundary)
-          : nullptr;
+      hasRegion(dict, ParticleRegion::Phase::Boundary) ? &particles.add("boundary", SetKind::Boundary) : nullptr;
+  ParticleSet* rigid = // rigid bodies move: rigid.vtp goes into every time directory, the static walls do not
+      hasRegion(dict, ParticleRegion::Phase::Rigid) ? &particles.add(kRigidSetName, SetKind::Boundary) : nullptr;
 
   long long nextId = 0; // ids are unique over all particles of the case
   for (std::size_t r = 0; r < dict.regions.size(); ++r) {
@@ -96,6 +96,7 @@ int main(int argc, char* argv[]) try {
     const std::vector<Vec3> points = region.sample(dict.particleRadius);
     ParticleSet* target = region.phase == ParticleRegion::Phase::Fluid    ? &fluid
                           : region.phase == ParticleRegion::Phase::Porous ? porous[region.materialId]
+                          : region.phase == ParticleRegion::Phase::Rigid  ? rigid
                                                                           : boundary;
     const std::size_t first = appendRegion(*target, points, region.velocity, static_cast<long long>(r), nextId);
     std::ostringstream line;

@@ -87,7 +87,7 @@ TEST(PorousMaterial, ReadsEveryKeyInFileOrder) {
 
 TEST(PorousMaterial, DensityLimitAndOwnFactorOfBothKinds) {
   // METHOD.md §3.1: rho^max = rho_b (incompressible) or rho_s^0 (compressible); c_s = rho_b / rho^max.
-  const auto materials = read("rigid: {porosity: 0.25, solidDensity: 2000}\n"
+  const auto materials = read("stiff: {porosity: 0.25, solidDensity: 2000}\n"
                               "soft: {porosity: 0.25, solidDensity: 2000, compressible: true}\n");
   ASSERT_EQ(materials.size(), 2u);
   EXPECT_DOUBLE_EQ(materials[0].maxDensity(), 1500.0);
@@ -168,6 +168,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadMaterial{"fluid:\n  porosity: 0.4\n  solidDensity: 2650\n", "constant/porosityProperties:1", "'fluid'",
                     "cannot name a porous material"},
         BadMaterial{"boundary:\n  porosity: 0.4\n  solidDensity: 2650\n", "constant/porosityProperties:1", "'boundary'",
+                    "cannot name a porous material"},
+        BadMaterial{"rigid:\n  porosity: 0.4\n  solidDensity: 2650\n", "constant/porosityProperties:1", "'rigid'",
                     "cannot name a porous material"},
         BadMaterial{"sand:\n  porosity: 0.4\n  solidDensity: 2650\nfine sand:\n  porosity: 0.3\n"
                     "  solidDensity: 2650\n",
