@@ -58,7 +58,7 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
                const SolverSettings& settings, const TimeControl& control, const RunState& start,
                std::vector<ObjectMotion> wallMotions, std::vector<RigidBody::Spec> rigidBodies)
     : particles_(std::move(particles)), fluid_(fluid), materials_(std::move(materials)), settings_(settings),
-      control_(control), state_(start), kernel_(particles_.supportRadius()), search_(particles_.supportRadius()),
+      control_(control), state_(start), kernel_(particles_.supportRadius()), search_(particles_.supportRadius(), settings.searchSkin * particles_.supportRadius()),
       implicit_(settings.implicit, makeImplicitTerms()), pressure_(settings.pressure),
       wallMotions_(std::move(wallMotions)), flatWallShare_(flatWallShare(kernel_, particles_.spacing())) {
   hasRigidBodies_ = !rigidBodies.empty();
@@ -335,8 +335,10 @@ StepContext Solver::context(double deltaT) {
 
 void Solver::searchNeighbours() {
   const bool sortNow = settings_.sortInterval > 0 && state_.step % settings_.sortInterval == 0;
-  if (sortNow)
+  if (sortNow) {
     for (std::size_t a : dynamicSets_) particles_[a].permute(search_.mortonOrder(particles_[a].x()));
+    search_.invalidate();
+  }
   std::vector<const std::vector<Vec3>*> positions;
   std::vector<std::vector<bool>> wanted(particles_.size(), std::vector<bool>(particles_.size(), false));
   for (std::size_t s = 0; s < particles_.size(); ++s) positions.push_back(&particles_[s].x());
@@ -472,6 +474,8 @@ void Solver::writeState(const Writer& write) {
   ScopedPhase phase(phases_, "output");
   write(*this);
   lastWrittenStep_ = state_.step;
+  // A run restarted from this time searches afresh; so does this one, and both continue bit for bit.
+  search_.invalidate();
 }
 
 void Solver::stopAfterWriting(const Writer& write, const std::string& message) {
@@ -667,6 +671,9 @@ RunOutcome Solver::run(const Writer& write, const Monitor& afterStep, const Obse
     summary << "  " << std::left << std::setw(10) << name << std::right << std::setw(10) << std::fixed
             << std::setprecision(3) << seconds << " s  " << std::setw(5) << std::setprecision(1)
             << (total > 0 ? 100.0 * seconds / total : 0.0) << " %\n";
+  if (settings_.searchSkin > 0)
+    summary << "Neighbour lists: " << search_.gridSearches() << " grid searches in " << search_.updates()
+            << " steps (skin " << std::setprecision(2) << settings_.searchSkin << " H)\n";
   log::info(summary.str());
   if (outcome.end != RunOutcome::End::Signal) log::info("End\n");
   return outcome;

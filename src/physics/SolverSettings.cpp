@@ -77,6 +77,7 @@ SolverSettings SolverSettings::read(const Dictionary& dict) {
   }
   if (auto n = dict.optionalSubDict("neighbourSearch")) {
     s.sortInterval = static_cast<int>(n->getInt("sortInterval", s.sortInterval, Range::closed(0, 1e9)));
+    s.searchSkin = n->getReal("skin", s.searchSkin, Range::closed(0.0, 1.0));
     n->checkUnknownKeys();
   }
   if (auto h = dict.optionalSubDict("health")) {

@@ -22,6 +22,8 @@ constexpr std::size_t kChunk = 512;
 /// 0.8999999999999999 at H = 0.1 land in cells 7 and 9), and the 27-cell stencil misses the pair. The
 /// margin exceeds the relative round-off (a few 1e-16) times the largest cell index (kMaxCells).
 constexpr double kCellWidening = 1.0 + 1e-6;
+/// Updates searched at H alone after the candidates lasted less than two updates.
+constexpr int kPausedUpdates = 16;
 
 struct CellIndex {
   std::int64_t ix, iy, iz;
@@ -36,7 +38,8 @@ struct SortedSet {
 
 } // namespace
 
-NeighbourSearch::CellGrid NeighbourSearch::makeGrid(const std::vector<const std::vector<Vec3>*>& positions) const {
+NeighbourSearch::CellGrid NeighbourSearch::makeGrid(const std::vector<const std::vector<Vec3>*>& positions,
+                                                     double radius) const {
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
   Vec3 hi = Vec3::Constant(std::numeric_limits<double>::lowest());
   for (const auto* xs : positions)
@@ -48,7 +51,7 @@ NeighbourSearch::CellGrid NeighbourSearch::makeGrid(const std::vector<const std:
   CellGrid grid;
   if (lo.x() > hi.x()) return grid; // no particles
   grid.origin = lo;
-  const double cellSize = h_ * kCellWidening;
+  const double cellSize = radius * kCellWidening;
   double cells = 1.0;
   for (int d = 0; d < 3; ++d) {
     grid.dims[d] = static_cast<std::int64_t>(std::floor((hi[d] - lo[d]) / cellSize)) + 1;
@@ -57,27 +60,116 @@ NeighbourSearch::CellGrid NeighbourSearch::makeGrid(const std::vector<const std:
   if (cells > static_cast<double>(kMaxCells)) {
     std::ostringstream msg;
     msg << "neighbour search: particles span [" << lo.transpose() << "] to [" << hi.transpose()
-        << "] m, more than " << kMaxCells << " cells of size " << h_
+        << "] m, more than " << kMaxCells << " cells of size " << cellSize
         << " m; particles are leaving the domain (reduce deltaT or maxCourant, or close the container)";
     throw NumericalError(msg.str());
   }
   return grid;
 }
 
+template <class AppendNeighbours>
+void NeighbourSearch::assemble(std::size_t n, NeighbourList& list, const AppendNeighbours& append) {
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
+  std::vector<std::vector<Index>> chunkIndices(chunks);
+  std::vector<std::int64_t> counts(n, 0);
+  parallel::forEachTask(chunks, [&](std::size_t chunk) {
+    std::vector<Index>& out = chunkIndices[chunk];
+    out.reserve(kChunk * 40);
+    const std::size_t end = std::min(n, (chunk + 1) * kChunk);
+    for (std::size_t i = chunk * kChunk; i < end; ++i) {
+      const std::size_t before = out.size();
+      append(i, out);
+      counts[i] = static_cast<std::int64_t>(out.size() - before);
+    }
+  });
+  parallel::exclusiveScan(counts, list.offsets_);
+  list.indices_.resize(static_cast<std::size_t>(list.offsets_[n]));
+  parallel::forEach(chunks, [&](std::size_t chunk) {
+    const auto& src = chunkIndices[chunk];
+    std::copy(src.begin(), src.end(), list.indices_.begin() + list.offsets_[chunk * kChunk]);
+  });
+}
+
 void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positions,
                              const std::vector<std::vector<bool>>& wanted) {
   sets_ = positions.size();
+  ++updates_;
+  if (skin_ == 0.0 || pausedUpdates_ > 0) {
+    if (pausedUpdates_ > 0) --pausedUpdates_;
+    build(positions, wanted, h_, lists_);
+    return;
+  }
+  if (mustRebuild(positions, wanted)) {
+    if (valid_ && filtersSinceBuild_ < 2) {
+      // The particles cross the skin every step or two (a fast flow): the grid search at H + skin would
+      // cost more than it saves. Search at H directly for a while, then try the skin again.
+      valid_ = false;
+      pausedUpdates_ = kPausedUpdates;
+      build(positions, wanted, h_, lists_);
+      return;
+    }
+    build(positions, wanted, h_ + skin_, candidates_);
+    builtAt_.resize(sets_);
+    for (std::size_t s = 0; s < sets_; ++s) builtAt_[s] = *positions[s];
+    builtWanted_ = wanted;
+    valid_ = true;
+    filtersSinceBuild_ = 0;
+  }
+  ++filtersSinceBuild_;
+  // The lists at H: the candidates within H + skin that are within H now, in the candidates' order.
   lists_.assign(sets_ * sets_, NeighbourList{});
-  const CellGrid grid = makeGrid(positions);
+  const double h2 = h_ * h_;
+  for (std::size_t a = 0; a < sets_; ++a)
+    for (std::size_t b = 0; b < sets_; ++b) {
+      if (!wanted[a][b]) continue;
+      const auto& xa = *positions[a];
+      const auto& xb = *positions[b];
+      const NeighbourList& candidates = candidates_[a * sets_ + b];
+      assemble(xa.size(), lists_[a * sets_ + b], [&](std::size_t i, std::vector<Index>& out) {
+        // Branch-free: three candidates in four are neighbours, in no order a predictor could learn.
+        const Vec3& p = xa[i];
+        const std::size_t used = out.size();
+        out.resize(used + candidates.of(i).size());
+        Index* const dst = out.data() + used;
+        std::size_t kept = 0;
+        for (const Index j : candidates.of(i)) {
+          dst[kept] = j;
+          kept += static_cast<std::size_t>((p - xb[static_cast<std::size_t>(j)]).squaredNorm() < h2);
+        }
+        out.resize(used + kept);
+      });
+    }
+}
+
+bool NeighbourSearch::mustRebuild(const std::vector<const std::vector<Vec3>*>& positions,
+                                  const std::vector<std::vector<bool>>& wanted) const {
+  if (!valid_ || wanted != builtWanted_ || builtAt_.size() != positions.size()) return true;
+  double largest = 0.0;
+  for (std::size_t s = 0; s < positions.size(); ++s) {
+    const auto& x = *positions[s];
+    const auto& x0 = builtAt_[s];
+    if (x.size() != x0.size()) return true;
+    largest = std::max(largest, parallel::max(x.size(), 0.0, [&](std::size_t i) { return (x[i] - x0[i]).norm(); }));
+  }
+  // Two particles that each moved less than skin / 2 since the build are still listed if within H.
+  return 2.0 * largest >= skin_;
+}
+
+void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positions,
+                            const std::vector<std::vector<bool>>& wanted, double radius,
+                            std::vector<NeighbourList>& lists) {
+  ++gridSearches_;
+  lists.assign(sets_ * sets_, NeighbourList{});
+  const CellGrid grid = makeGrid(positions, radius);
   const std::int64_t nx = grid.dims[0], ny = grid.dims[1], nz = grid.dims[2];
   const std::int64_t nCells = nx * ny * nz;
-  const double invH = 1.0 / (h_ * kCellWidening);
-  const double h2 = h_ * h_;
+  const double invCell = 1.0 / (radius * kCellWidening);
+  const double radius2 = radius * radius;
 
   auto cellOf = [&](const Vec3& p) {
-    CellIndex c{static_cast<std::int64_t>((p.x() - grid.origin.x()) * invH),
-                static_cast<std::int64_t>((p.y() - grid.origin.y()) * invH),
-                static_cast<std::int64_t>((p.z() - grid.origin.z()) * invH)};
+    CellIndex c{static_cast<std::int64_t>((p.x() - grid.origin.x()) * invCell),
+                static_cast<std::int64_t>((p.y() - grid.origin.y()) * invCell),
+                static_cast<std::int64_t>((p.z() - grid.origin.z()) * invCell)};
     c.ix = std::min(c.ix, nx - 1);
     c.iy = std::min(c.iy, ny - 1);
     c.iz = std::min(c.iz, nz - 1);
@@ -113,43 +205,25 @@ void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positi
 
   for (std::size_t a = 0; a < sets_; ++a) {
     const auto& xa = *positions[a];
-    const std::size_t n = xa.size();
     for (std::size_t b = 0; b < sets_; ++b) {
       if (!wanted[a][b]) continue;
       const SortedSet& s = sorted[b];
       const bool self = a == b;
-      const std::size_t chunks = (n + kChunk - 1) / kChunk;
-      std::vector<std::vector<Index>> chunkIndices(chunks);
-      std::vector<std::int64_t> counts(n, 0);
-      parallel::forEachTask(chunks, [&](std::size_t chunk) {
-        std::vector<Index>& out = chunkIndices[chunk];
-        out.reserve(kChunk * 40);
-        const std::size_t end = std::min(n, (chunk + 1) * kChunk);
-        for (std::size_t i = chunk * kChunk; i < end; ++i) {
-          const Vec3& p = xa[i];
-          const CellIndex c = cellOf(p);
-          const std::size_t before = out.size();
-          for (std::int64_t z = std::max<std::int64_t>(c.iz - 1, 0); z <= std::min(c.iz + 1, nz - 1); ++z)
-            for (std::int64_t y = std::max<std::int64_t>(c.iy - 1, 0); y <= std::min(c.iy + 1, ny - 1); ++y) {
-              // The x-neighbours of one (y, z) row are consecutive cells: one contiguous range.
-              const std::int64_t row = nx * (y + ny * z);
-              const std::int64_t c0 = row + std::max<std::int64_t>(c.ix - 1, 0);
-              const std::int64_t c1 = row + std::min(c.ix + 1, nx - 1);
-              for (std::int64_t k = s.cellStart[c0]; k < s.cellStart[c1 + 1]; ++k) {
-                const Index j = s.index[static_cast<std::size_t>(k)];
-                if (self && static_cast<std::size_t>(j) == i) continue;
-                if ((p - s.x[static_cast<std::size_t>(k)]).squaredNorm() < h2) out.push_back(j);
-              }
+      assemble(xa.size(), lists[a * sets_ + b], [&](std::size_t i, std::vector<Index>& out) {
+        const Vec3& p = xa[i];
+        const CellIndex c = cellOf(p);
+        for (std::int64_t z = std::max<std::int64_t>(c.iz - 1, 0); z <= std::min(c.iz + 1, nz - 1); ++z)
+          for (std::int64_t y = std::max<std::int64_t>(c.iy - 1, 0); y <= std::min(c.iy + 1, ny - 1); ++y) {
+            // The x-neighbours of one (y, z) row are consecutive cells: one contiguous range.
+            const std::int64_t row = nx * (y + ny * z);
+            const std::int64_t c0 = row + std::max<std::int64_t>(c.ix - 1, 0);
+            const std::int64_t c1 = row + std::min(c.ix + 1, nx - 1);
+            for (std::int64_t k = s.cellStart[c0]; k < s.cellStart[c1 + 1]; ++k) {
+              const Index j = s.index[static_cast<std::size_t>(k)];
+              if (self && static_cast<std::size_t>(j) == i) continue;
+              if ((p - s.x[static_cast<std::size_t>(k)]).squaredNorm() < radius2) out.push_back(j);
             }
-          counts[i] = static_cast<std::int64_t>(out.size() - before);
-        }
-      });
-      NeighbourList& list = lists_[a * sets_ + b];
-      parallel::exclusiveScan(counts, list.offsets_);
-      list.indices_.resize(static_cast<std::size_t>(list.offsets_[n]));
-      parallel::forEach(chunks, [&](std::size_t chunk) {
-        const auto& src = chunkIndices[chunk];
-        std::copy(src.begin(), src.end(), list.indices_.begin() + list.offsets_[chunk * kChunk]);
+          }
       });
     }
   }
@@ -160,7 +234,7 @@ std::vector<Index> NeighbourSearch::mortonOrder(const std::vector<Vec3>& x) cons
   std::vector<Index> order(n);
   std::iota(order.begin(), order.end(), Index{0});
   if (n == 0) return order;
-  const CellGrid grid = makeGrid({&x});
+  const CellGrid grid = makeGrid({&x}, h_);
   auto spread = [](std::uint64_t v) { // 21 bits -> every third bit
     v &= 0x1fffff;
     v = (v | v << 32) & 0x1f00000000ffffULL;

@@ -1,7 +1,12 @@
 #pragma once
-/// Uniform cell-grid neighbour search over several particle sets (METHOD.md §6.1): cell size H, 27-cell
-/// stencil, strict ||x_ab|| < H, one compressed (CSR) list per requested ordered pair of sets.
-/// Neighbours come in a fixed order (stencil cell, then index), so sums are reproducible.
+/// Uniform cell-grid neighbour search over several particle sets (METHOD.md §6.1): 27-cell stencil, strict
+/// ||x_ab|| < H, one compressed (CSR) list per requested ordered pair of sets.
+/// With a skin s > 0 (Verlet lists), the grid search runs at H + s and is kept as candidates until some
+/// particle has moved s / 2 since; in between, each update only keeps the candidates within H. Where the
+/// candidates last less than two updates (a fast flow), it searches at H alone for the next 16 updates.
+/// Neighbours come in a fixed order (stencil cell of the last grid search, then index), so sums are
+/// reproducible; the caller invalidates the candidates wherever a later run must rebuild them identically
+/// (after a reordering of the particles, after writing a restartable time).
 
 #include "core/Types.hpp"
 
@@ -34,7 +39,7 @@ private:
 
 class NeighbourSearch {
 public:
-  explicit NeighbourSearch(double supportRadius) : h_(supportRadius) {}
+  explicit NeighbourSearch(double supportRadius, double skin = 0.0) : h_(supportRadius), skin_(skin) {}
 
   /// Positions of every set, by set number. `wanted[a][b]` says whether the list a->b is needed.
   /// Lists of a set with itself exclude the particle itself.
@@ -48,16 +53,42 @@ public:
 
   double supportRadius() const { return h_; }
 
+  /// The next update runs the grid search, whatever the particles' displacements.
+  void invalidate() {
+    valid_ = false;
+    pausedUpdates_ = 0;
+  }
+  /// Updates so far, and the grid searches among them (all of them without a skin).
+  std::size_t updates() const { return updates_; }
+  std::size_t gridSearches() const { return gridSearches_; }
+
 private:
   struct CellGrid {
     Vec3 origin = Vec3::Zero();
     std::int64_t dims[3] = {0, 0, 0};
   };
-  CellGrid makeGrid(const std::vector<const std::vector<Vec3>*>& positions) const;
+  CellGrid makeGrid(const std::vector<const std::vector<Vec3>*>& positions, double radius) const;
+  /// The grid search at `radius` into `lists`.
+  void build(const std::vector<const std::vector<Vec3>*>& positions, const std::vector<std::vector<bool>>& wanted,
+             double radius, std::vector<NeighbourList>& lists);
+  bool mustRebuild(const std::vector<const std::vector<Vec3>*>& positions,
+                   const std::vector<std::vector<bool>>& wanted) const;
+  /// Fills `list` for n particles in parallel; append(i, out) appends particle i's neighbours to out.
+  template <class AppendNeighbours>
+  static void assemble(std::size_t n, NeighbourList& list, const AppendNeighbours& append);
 
   double h_;
+  double skin_;
   std::size_t sets_ = 0;
   std::vector<NeighbourList> lists_;
+  std::vector<NeighbourList> candidates_;           ///< lists at H + skin from the last grid search
+  std::vector<std::vector<Vec3>> builtAt_;          ///< positions at the last grid search
+  std::vector<std::vector<bool>> builtWanted_;      ///< the lists requested then
+  bool valid_ = false;
+  int filtersSinceBuild_ = 0; ///< updates served by the current candidates
+  int pausedUpdates_ = 0;     ///< updates still to search at H alone (the skin did not pay)
+  std::size_t updates_ = 0;
+  std::size_t gridSearches_ = 0;
 };
 
 } // namespace poro

@@ -256,8 +256,11 @@ TEST(RigidBody, HeldUntilItsReleaseTimeThenFallsFreely) {
     EXPECT_EQ(solver.state().rigidBodies[0].centre, start) << "step " << n;
   }
   const ParticleSet& walls = solver.particles()[1];
-  for (std::size_t k = 0; k < walls.size(); ++k)
-    if (walls.integer(field::objectId)[k] == 0) EXPECT_EQ(walls.v()[k], Vec3::Zero());
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    if (walls.integer(field::objectId)[k] == 0) {
+      EXPECT_EQ(walls.v()[k], Vec3::Zero());
+    }
+  }
   for (int n = 1; n <= 30; ++n) solver.step(dt);
   const RigidBodyState& s = solver.state().rigidBodies[0];
   EXPECT_NEAR(s.velocity.y(), -9.81 * 30 * dt, 1e-12);

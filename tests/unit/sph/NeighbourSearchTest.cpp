@@ -378,5 +378,86 @@ TEST(NeighbourSearch, ListsFollowAPermutation) {
   expectSameSets(renamed, expected, "sorted");
 }
 
+// Verlet lists: with a skin, every update's lists equal the brute-force search at H while the particles move,
+// whether the update reused the candidates or searched the grid again.
+TEST(NeighbourSearch, SkinListsEqualBruteForceWhileParticlesMove) {
+  const double h = 0.04;
+  const double skin = 0.2 * h;
+  Positions fluid = randomPoints(2000, Vec3::Zero(), Vec3(0.25, 0.25, 0.25), 7);
+  const Positions wall = randomPoints(800, Vec3(-0.05, -0.05, -0.05), Vec3(0.3, 0.0, 0.3), 8);
+  const std::vector<const Positions*> sets{&fluid, &wall};
+  const std::vector<std::vector<bool>> wanted{{true, true}, {false, false}};
+  NeighbourSearch search(h, skin);
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const int updates = 30;
+  for (int step = 0; step < updates; ++step) {
+    search.update(sets, wanted);
+    const std::string what = "update " + std::to_string(step);
+    expectSameSets(toLists(search.list(0, 0)), bruteForce(fluid, fluid, h, true), (what + ", fluid->fluid").c_str());
+    expectSameSets(toLists(search.list(0, 1)), bruteForce(fluid, wall, h, false), (what + ", fluid->wall").c_str());
+    // Even and odd particles move apart at 0.3 skin per update (plus noise): the candidates last a few
+    // updates, and pairs cross from beyond H + skin into H within the run.
+    for (std::size_t i = 0; i < fluid.size(); ++i)
+      fluid[i] += 0.15 * skin * Vec3(i % 2 == 0 ? 1.0 : -1.0, 0.0, 0.0) + 0.02 * skin * Vec3(u(rng), u(rng), u(rng));
+    // Now and then one particle jumps a whole H: its old candidates cannot hold its new neighbours.
+    if (step % 7 == 3) fluid[static_cast<std::size_t>(step)] += Vec3(h, 0.0, 0.0);
+  }
+  EXPECT_EQ(search.updates(), static_cast<std::size_t>(updates));
+  EXPECT_GT(search.gridSearches(), 4u) << "the jumps must force grid searches";
+  EXPECT_LT(search.gridSearches(), search.updates()) << "the candidates were never reused";
+}
+
+// After invalidate() a search with a history lists exactly what a new search lists, in the same order: what
+// makes a restarted run (a new search) continue bit for bit.
+TEST(NeighbourSearch, InvalidatedSkinSearchEqualsAFreshOne) {
+  const double h = 0.04;
+  Positions x = randomPoints(1500, Vec3::Zero(), Vec3(0.2, 0.2, 0.2), 11);
+  const std::vector<const Positions*> sets{&x};
+  const std::vector<std::vector<bool>> wanted{{true}};
+  NeighbourSearch used(h, 0.1 * h);
+  used.update(sets, wanted);
+  for (auto& p : x) p += Vec3(0.001, -0.0005, 0.0007); // within the skin: candidates are reused...
+  used.update(sets, wanted);
+  EXPECT_EQ(used.gridSearches(), 1u);
+  used.invalidate(); // ...unless invalidated
+  used.update(sets, wanted);
+  EXPECT_EQ(used.gridSearches(), 2u);
+  NeighbourSearch fresh(h, 0.1 * h);
+  fresh.update(sets, wanted);
+  EXPECT_TRUE(toLists(used.list(0, 0)) == toLists(fresh.list(0, 0)));
+}
+
+// A set that changed size (particles removed by the health checks) is searched again, never filtered
+// with stale indices.
+TEST(NeighbourSearch, SkinSearchRebuildsWhenASetChangesSize) {
+  const double h = 0.04;
+  Positions x = randomPoints(1000, Vec3::Zero(), Vec3(0.2, 0.2, 0.2), 12);
+  const std::vector<const Positions*> sets{&x};
+  const std::vector<std::vector<bool>> wanted{{true}};
+  NeighbourSearch search(h, 0.1 * h);
+  search.update(sets, wanted);
+  x.erase(x.begin() + 10, x.begin() + 20);
+  search.update(sets, wanted);
+  EXPECT_EQ(search.gridSearches(), 2u);
+  expectSameSets(toLists(search.list(0, 0)), bruteForce(x, x, h, true), "after removal");
+}
+
+// A flow that crosses the skin at every update is searched at every update, and stays exact.
+TEST(NeighbourSearch, SkinSearchInAFastFlowSearchesEveryUpdate) {
+  const double h = 0.04;
+  const double skin = 0.1 * h;
+  Positions x = randomPoints(1000, Vec3::Zero(), Vec3(0.2, 0.2, 0.2), 13);
+  const std::vector<const Positions*> sets{&x};
+  const std::vector<std::vector<bool>> wanted{{true}};
+  NeighbourSearch search(h, skin);
+  for (int step = 0; step < 40; ++step) {
+    search.update(sets, wanted);
+    expectSameSets(toLists(search.list(0, 0)), bruteForce(x, x, h, true), ("update " + std::to_string(step)).c_str());
+    for (std::size_t i = 0; i < x.size(); ++i) x[i] += 0.6 * skin * Vec3(i % 2 == 0 ? 1.0 : -1.0, 0.0, 0.0);
+  }
+  EXPECT_EQ(search.gridSearches(), search.updates());
+}
+
 } // namespace
 } // namespace poro
