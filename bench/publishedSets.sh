@@ -1,0 +1,107 @@
+#!/usr/bin/env bash
+# The published sets' timing table (issue "four times the authors' speed", bench/README.md): each set is the
+# tutorial in tutorials/published/, at the resolution and over the interval of its row, at the paper's fixed
+# dt = 1 ms, run once per mode and thread count from the same sampled 0/. Prints one Markdown row per run:
+# particles, ms/step, microseconds per particle-step, phase split, pressure sweeps and CG iterations per
+# step, peak resident memory (GNU time) and bytes per particle.
+#
+# usage: bench/publishedSets.sh [BUILD_DIR] [SETS] [MODES] [THREADS]
+#   BUILD_DIR  build tree holding bin/poroSph and bin/sampleParticles                   (default: <repo>/build)
+#   SETS       of: seep-r2cm float-r2.5cm climb-r2cm seep-r1cm  (default: the first three; seep-r1cm takes
+#              about 5 minutes a run on 2 cores)
+#   MODES      of: paper reference                                                      (default: both)
+#   THREADS    thread counts, one run each                                              (default: "1 2")
+# environment: STEPS=N runs N steps of every set instead of its row's interval (a quick look).
+#
+# The time per step is the time loop's ("ExecutionTime" of the log after the last step: set-up and the one
+# final write excluded); memory is the whole process's peak.
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+repo="$(dirname "$here")"
+build="${1:-$repo/build}"
+sets="${2:-seep-r2cm float-r2.5cm climb-r2cm}"
+modes="${3:-paper reference}"
+threads_list="${4:-1 2}"
+
+die() { echo "publishedSets: $*" >&2; exit 1; }
+
+for exe in poroSph sampleParticles; do
+  [[ -x "$build/bin/$exe" ]] || die "$build/bin/$exe not found; build it: cmake --build $build --target $exe"
+done
+[[ -x /usr/bin/time ]] || die "/usr/bin/time (GNU time, Debian package 'time') is needed for the peak memory"
+for mode in $modes; do [[ "$mode" == paper || "$mode" == reference ]] || die "unknown mode '$mode' (paper, reference)"; done
+for t in $threads_list; do [[ "$t" =~ ^[1-9][0-9]*$ ]] || die "THREADS must be positive integers, got '$t'"; done
+
+# set -> "tutorial steps": the rows of the issue's table. A set with bench/published/<set>.particleDict
+# uses that instead of the tutorial's.
+declare -A row=(
+  [seep-r2cm]="seep 500"     # 0-0.5 s
+  [float-r2.5cm]="float 1000" # 0-1 s, the published set
+  [climb-r2cm]="climb 1000"   # 0-1 s
+  [seep-r1cm]="seep 300"      # 0-0.3 s, the published set: landing and first contact
+)
+for set in $sets; do [[ -n "${row[$set]:-}" ]] || die "unknown set '$set' (${!row[*]})"; done
+
+work="$(mktemp -d "${TMPDIR:-/tmp}/publishedSets.XXXXXX")"
+trap 'rm -rf "$work"' EXIT
+
+# Sets a top-level key of a YAML dictionary, replacing its line.
+set_key() { sed -i "s|^$2:.*|$2: $3|" "$1"; }
+
+echo "| set | mode | threads | particles (fluid + porous / walls) | ms/step | µs per particle-step (all) | search / densities / implicit / pressure % | sweeps/step | CG/step | peak RSS MiB | bytes/particle |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|"
+for set in $sets; do
+  read -r tutorial steps <<<"${row[$set]}"
+  steps="${STEPS:-$steps}"
+  base="$work/$set"
+  mkdir -p "$base"
+  cp -r "$repo/tutorials/published/$tutorial/system" "$repo/tutorials/published/$tutorial/constant" "$base/"
+  if [[ -f "$here/published/$set.particleDict" ]]; then # a coarse set with boxes of whole spacings
+    cp "$here/published/$set.particleDict" "$base/system/particleDict"
+  fi
+  control="$base/system/controlDict"
+  end_time="$(awk -v n="$steps" 'BEGIN { printf "%.12g", n * 0.001 }')"
+  set_key "$control" startFrom startTime
+  set_key "$control" deltaT 0.001
+  set_key "$control" adjustTimeStep false
+  set_key "$control" endTime "$end_time"
+  set_key "$control" writeInterval "$end_time"
+  "$build/bin/sampleParticles" -case "$base" >"$base/log.sampleParticles" 2>&1 ||
+    { tail -n 20 "$base/log.sampleParticles" >&2; die "sampleParticles failed on $set"; }
+  count() { # particles of one phase in the sampling log
+    awk -v phase="$1" '/^region .*: [0-9]+ (fluid|porous) particles/ {
+                         for (i = 1; i <= NF; ++i) if ($(i + 1) == phase) n += $i }
+                       END { print n + 0 }' "$base/log.sampleParticles"
+  }
+  fluid="$(count fluid)"
+  porous="$(count porous)"
+  total="$(sed -n 's/^Wrote .* with \([0-9][0-9]*\) particles.*/\1/p' "$base/log.sampleParticles" | tail -n 1)"
+  for mode in $modes; do
+    sed -i "s/^  preset: .*/  preset: $mode/" "$base/system/solverDict"
+    for t in $threads_list; do
+      rm -rf "$base/$end_time" "$base/case.pvd" "$base/postProcessing"
+      log="$base/log.poroSph.$mode.$t"
+      /usr/bin/time -f "%M" -o "$base/rss" "$build/bin/poroSph" -case "$base" -threads "$t" >"$log" 2>&1 ||
+        { tail -n 20 "$log" >&2; die "poroSph failed on $set ($mode, $t threads)"; }
+      awk -v set="$set" -v mode="$mode" -v threads="$t" -v fluid="$fluid" -v porous="$porous" -v total="$total" \
+          -v rssKiB="$(cat "$base/rss")" '
+        /^Time = .*\(step [0-9]+\)/ { s = $0; sub(/.*\(step /, "", s); sub(/\).*/, "", s); steps = s + 0 }
+        /^pressure: [0-9]+ sweeps/  { sweeps += $2; nPressure++ }
+        /^implicit: [0-9]+ CG/      { cg += $2; nImplicit++ }
+        /^ExecutionTime = /         { seconds = $3 + 0 }
+        /^Phase breakdown over/     { inPhases = 1; next }
+        inPhases && /^[A-Z]/        { inPhases = 0 }
+        inPhases && NF >= 4         { share[$1] = $4 }
+        END {
+          if (steps == 0 || seconds <= 0) { print "| " set " | " mode " | " threads " | no steps in the log |"; exit 1 }
+          ms = 1000.0 * seconds / steps
+          printf "| %s | %s | %d | %d + %d / %d | %.1f | %.2f | %s / %s / %s / %s | %.1f | %.1f | %.0f | %.0f |\n",
+                 set, mode, threads, fluid, porous, total - fluid - porous, ms, 1000.0 * ms / total,
+                 share["search"], share["densities"], share["implicit"], share["pressure"],
+                 nPressure ? sweeps / nPressure : 0, nImplicit ? cg / nImplicit : 0,
+                 rssKiB / 1024.0, rssKiB * 1024.0 / total
+        }' "$log"
+    done
+  done
+done
