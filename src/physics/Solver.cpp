@@ -18,6 +18,7 @@
 #include "physics/Viscosity.hpp"
 #include "physics/VolumeFactors.hpp"
 #include "physics/WallContact.hpp"
+#include "physics/XsphSmoothing.hpp"
 #include "sph/BoundaryVolume.hpp"
 
 #include <algorithm>
@@ -365,6 +366,7 @@ StepContext Solver::beginStep(double deltaT) {
 void Solver::step(double deltaT) {
   const StepContext ctx = beginStep(deltaT);
   measureFluidDensity();
+  smoothFluidVelocities(ctx, settings_.xsph);
   {
     ScopedPhase phase(phases_, "implicit");
     report_.implicit = implicit_.solve(ctx);
