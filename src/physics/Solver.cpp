@@ -366,9 +366,9 @@ StepContext Solver::beginStep(double deltaT) {
 void Solver::step(double deltaT) {
   const StepContext ctx = beginStep(deltaT);
   measureFluidDensity();
-  smoothFluidVelocities(ctx, settings_.xsph);
   {
-    ScopedPhase phase(phases_, "implicit");
+    ScopedPhase phase(phases_, "implicit"); // the non-pressure velocity updates: XSPH smoothing, then Eq. 22
+    smoothFluidVelocities(ctx, settings_.xsph);
     report_.implicit = implicit_.solve(ctx);
   }
   {
