@@ -189,7 +189,7 @@ TEST(FluidStatistics, KineticEnergyMomentumAndCompressionOnlyDensityError) {
   EXPECT_DOUBLE_EQ(stats.momentum.z(), 3.0 * m);
   EXPECT_DOUBLE_EQ(stats.maxSpeed, 3.0);
   EXPECT_DOUBLE_EQ(stats.meanSpeed, (1.0 + 2.0 + 3.0 + std::sqrt(2.0)) / 4);
-  EXPECT_FALSE(stats.pressureGradient.has_value()); // no pressure field
+  EXPECT_FALSE(stats.pressureGradient.has_value());              // no pressure field
   EXPECT_NEAR(*stats.meanDensityError, (1.0 + 0.05) / 4, 1e-12); // 990 is expansion: no error
   EXPECT_NEAR(*stats.maxDensityError, 1.0, 1e-12);
 }

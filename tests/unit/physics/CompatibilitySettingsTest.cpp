@@ -110,14 +110,12 @@ TEST(PoreFluidDensity, TheKeyWinsOverDefaultAndPresetAndAnythingElseIsAnError) {
   }
 }
 
-double xsph(const std::string& text) {
-  return SolverSettings::read(Dictionary::parse(text, "system/solverDict")).xsph;
-}
+double xsph(const std::string& text) { return SolverSettings::read(Dictionary::parse(text, "system/solverDict")).xsph; }
 
 TEST(Xsph, OnByDefaultSoWaterAtRestComesToRest) {
   // Not in the paper (XsphSmoothing.hpp); without it the hydrostatic tank keeps 0.15 m/s of eddies.
   EXPECT_EQ(xsph("threads: 0\n"), 0.1);
-  EXPECT_EQ(SolverSettings{}.xsph, 0.1); // the struct states the file's default
+  EXPECT_EQ(SolverSettings{}.xsph, 0.1);                                   // the struct states the file's default
   EXPECT_EQ(xsph("compatibility: {volumetricStress: unitLambda}\n"), 0.1); // single switches are no preset
 }
 

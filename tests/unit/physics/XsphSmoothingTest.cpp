@@ -1,7 +1,7 @@
 // XSPH smoothing of the fluid velocities (XsphSmoothing.hpp): what it does to momentum and kinetic energy.
 
-#include "PorousTestSystems.hpp"
 #include "physics/XsphSmoothing.hpp"
+#include "PorousTestSystems.hpp"
 
 #include <gtest/gtest.h>
 
