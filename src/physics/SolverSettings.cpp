@@ -48,15 +48,11 @@ CompatibilitySettings CompatibilitySettings::reference() {
 
 SolverSettings SolverSettings::read(const Dictionary& dict) {
   SolverSettings s;
-  // Compatibility first: naming a preset, paper or reference, asks for the published method, so it turns the
-  // defaults of pressure.poreFluidDensity back to paper (Eq. 4, METHOD.md §3.3) and of xsph to 0 (no smoothing);
-  // the keys themselves still win.
+  // Compatibility first: naming a preset, paper or reference, asks for Eq. 4 as published, so it turns the
+  // default of pressure.poreFluidDensity back to paper (METHOD.md §3.3); the key itself still wins.
   if (auto c = dict.optionalSubDict("compatibility")) {
     s.compatibility = readCompatibility(*c);
-    if (c->has("preset")) {
-      s.pressure.latticeCorrectedPoreFluid = false;
-      s.xsph = 0.0;
-    }
+    if (c->has("preset")) s.pressure.latticeCorrectedPoreFluid = false;
   }
   if (auto p = dict.optionalSubDict("pressure")) {
     auto& ps = s.pressure;

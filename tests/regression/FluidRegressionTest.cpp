@@ -23,7 +23,7 @@ constexpr double kRho0 = 1000.0;
 
 /// Hydrostatic tank as in the tutorial (20 x 25 x 20 particles, r = 1 cm, depth 0.5 m), but settled by a
 /// viscosity: mu = 5 Pa s brings it to 6 mm/s rms by t = 1 s; at rest viscosity does not change the pressure.
-/// Without the default XSPH smoothing, which compacts the column further (its surface ends about 1 % lower) and
+/// Without the tutorial's XSPH smoothing, which compacts the column further (its surface ends about 1 % lower) and
 /// leaves the third layer below the surface 5.2-5.3 % over rho0 g d (tutorial README, issue 23).
 /// 1.5 s, the checks use the last 0.5 s.
 class HydrostaticTank : public ::testing::Test {
