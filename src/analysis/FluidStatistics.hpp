@@ -20,6 +20,12 @@ struct FluidStatistics {
   double potentialEnergy = 0.0;
   Vec3 momentum = Vec3::Zero(); ///< sum m v [kg m/s]
   double maxSpeed = 0.0;        ///< max |v| [m/s]
+  double meanSpeed = 0.0;       ///< mean |v| [m/s]
+  /// Hydrostatic check: minus the least-squares slope of the pressure against the height (along -g) over the
+  /// particles between 15 % and 85 % of the way from the lowest to the highest one and three spacings inside the
+  /// fluid's horizontal extent, divided by rho0 |g| (1 for a pool at rest). Empty without a pressure field,
+  /// gravity or a height range.
+  std::optional<double> pressureGradient;
   /// Lowest and highest particle centre along the analysis axis [m] (a surge front with -axis x, the free
   /// surface of a pool with the default axis). Empty without fluid particles.
   std::optional<double> minPosition, maxPosition;

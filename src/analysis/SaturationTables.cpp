@@ -11,7 +11,8 @@ const char* const kObjectColumns[] = {"solidParticles", "absorbedParticles", "ab
 const char* const kFluidColumns[] = {
     "particles",            "meanDensityError_percent", "maxDensityError_percent", "kineticEnergy_J",
     "momentumX_kg_m_per_s", "momentumY_kg_m_per_s",     "momentumZ_kg_m_per_s",    "potentialEnergy_J",
-    "maxSpeed_m_per_s",     "minPosition_m",            "maxPosition_m"};
+    "maxSpeed_m_per_s",     "minPosition_m",            "maxPosition_m",           "meanSpeed_m_per_s",
+    "pressureGradient_rho0g"};
 
 void addObject(CsvTable& table, const ObjectStatistics& o) {
   table.add(o.solidParticles).add(o.absorbedParticles).add(o.absorbedVolume).add(o.absorbedMass);
@@ -52,6 +53,7 @@ CsvTable timeSeriesTable(const std::vector<TimeRecord>& records) {
     table.add(f.particles).add(f.meanDensityError).add(f.maxDensityError).add(f.kineticEnergy);
     table.add(f.momentum.x()).add(f.momentum.y()).add(f.momentum.z());
     table.add(f.potentialEnergy).add(f.maxSpeed).add(f.minPosition).add(f.maxPosition);
+    table.add(f.meanSpeed).add(f.pressureGradient);
   }
   return table;
 }

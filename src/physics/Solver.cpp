@@ -18,6 +18,7 @@
 #include "physics/Viscosity.hpp"
 #include "physics/VolumeFactors.hpp"
 #include "physics/WallContact.hpp"
+#include "physics/XsphSmoothing.hpp"
 #include "sph/BoundaryVolume.hpp"
 
 #include <algorithm>
@@ -368,7 +369,8 @@ void Solver::step(double deltaT) {
   const StepContext ctx = beginStep(deltaT);
   measureFluidDensity();
   {
-    ScopedPhase phase(phases_, "implicit");
+    ScopedPhase phase(phases_, "implicit"); // the non-pressure velocity updates: XSPH smoothing, then Eq. 22
+    smoothFluidVelocities(ctx, settings_.xsph);
     report_.implicit = implicit_.solve(ctx);
   }
   {

@@ -75,6 +75,7 @@ SolverSettings SolverSettings::read(const Dictionary& dict) {
     is.preconditioner = i->getWord("preconditioner", {"blockJacobi", "none"}, "blockJacobi") == "blockJacobi";
     i->checkUnknownKeys();
   }
+  s.xsph = dict.getReal("xsph", s.xsph, Range::closed(0.0, 1.0));
   if (auto n = dict.optionalSubDict("neighbourSearch")) {
     s.sortInterval = static_cast<int>(n->getInt("sortInterval", s.sortInterval, Range::closed(0, 1e9)));
     s.searchSkin = n->getReal("skin", s.searchSkin, Range::closed(0.0, 1.0));

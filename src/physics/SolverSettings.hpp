@@ -65,6 +65,9 @@ struct CompatibilitySettings {
 
 struct SolverSettings {
   PressureSettings pressure;
+  /// XSPH smoothing eps of the fluid velocities (XsphSmoothing.hpp), [0, 1]. Not in the paper, and off by default:
+  /// it acts like a viscosity of about 0.05 eps H^2 / dt, which slows seepage and sinking bodies.
+  double xsph = 0.0;
   ImplicitSettings implicit;
   CompatibilitySettings compatibility;
   HealthSettings health;

@@ -34,7 +34,12 @@ Definitions (r = particle radius, V = (2r)^3, rho0 = fluid density of constant/f
   potential       sum -rho0 V g.x [J] (g of constant/fluidProperties), zero at the origin: only its change
                   over time means something; energy.svg plots it relative to the first time
   fluid extent    minPosition, maxPosition: the lowest and highest fluid particle centre along the axis
-                  (a surge front with -axis x, a pool's free surface with the default axis); maxSpeed = max |v|
+                  (a surge front with -axis x, a pool's free surface with the default axis); maxSpeed = max |v|,
+                  meanSpeed = mean |v|
+  pressure gradient  -(slope of the `pressure` field against the height, along -g) / (rho0 |g|), least squares
+                  over the particles between 15 and 85 % of the way from the lowest to the highest one and three
+                  spacings 2r inside the fluid's horizontal extent (the layer at a side wall stands steeper);
+                  1 for a pool at rest, empty without pressure
 Time 0 of sampleParticles has no saturation or density yet: those cells stay empty.
 
 Output in <case>/postProcessing/saturationAnalysis/ (rewritten on every run, for the selected times):
@@ -45,7 +50,8 @@ Output in <case>/postProcessing/saturationAnalysis/ (rewritten on every run, for
                           .maxDensity_kg_per_m3 (its densest particle);
                           fluid.particles, .meanDensityError_percent, .maxDensityError_percent,
                           .kineticEnergy_J, .momentumX_kg_m_per_s, .momentumY_kg_m_per_s, .momentumZ_kg_m_per_s,
-                          .potentialEnergy_J, .maxSpeed_m_per_s, .minPosition_m, .maxPosition_m
+                          .potentialEnergy_J, .maxSpeed_m_per_s, .minPosition_m, .maxPosition_m,
+                          .meanSpeed_m_per_s, .pressureGradient_rho0g
   saturationProfiles.csv  time_s, object, position_m, meanSaturation, particles
   *.svg                   with porous objects: absorbedVolume, fillFraction, wetFront and per object
                           saturationProfiles_<object> (up to six times, including the latest); always

@@ -50,7 +50,8 @@ TEST(SaturationTables, TimeSeriesHasNamedColumnsWithUnits) {
             "object3.centre_m,object3.minPosition_m,object3.maxPosition_m,object3.maxDensity_kg_per_m3,"
             "fluid.particles,fluid.meanDensityError_percent,fluid.maxDensityError_percent,fluid.kineticEnergy_J,"
             "fluid.momentumX_kg_m_per_s,fluid.momentumY_kg_m_per_s,fluid.momentumZ_kg_m_per_s,"
-            "fluid.potentialEnergy_J,fluid.maxSpeed_m_per_s,fluid.minPosition_m,fluid.maxPosition_m");
+            "fluid.potentialEnergy_J,fluid.maxSpeed_m_per_s,fluid.minPosition_m,fluid.maxPosition_m,"
+            "fluid.meanSpeed_m_per_s,fluid.pressureGradient_rho0g");
   const double v = 8.0 * kR * kR * kR;
   const std::string volume = CsvTable::formatNumber(10 * v), pores = CsvTable::formatNumber(0.4 * 64 * v);
   // t = 0: no saturation and no density yet, so those cells are empty.

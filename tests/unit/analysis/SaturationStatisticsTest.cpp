@@ -7,6 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include <random>
 
 namespace poro::test {
@@ -185,6 +188,8 @@ TEST(FluidStatistics, KineticEnergyMomentumAndCompressionOnlyDensityError) {
   EXPECT_DOUBLE_EQ(stats.momentum.y(), -1.0 * m);
   EXPECT_DOUBLE_EQ(stats.momentum.z(), 3.0 * m);
   EXPECT_DOUBLE_EQ(stats.maxSpeed, 3.0);
+  EXPECT_DOUBLE_EQ(stats.meanSpeed, (1.0 + 2.0 + 3.0 + std::sqrt(2.0)) / 4);
+  EXPECT_FALSE(stats.pressureGradient.has_value());              // no pressure field
   EXPECT_NEAR(*stats.meanDensityError, (1.0 + 0.05) / 4, 1e-12); // 990 is expansion: no error
   EXPECT_NEAR(*stats.maxDensityError, 1.0, 1e-12);
 }
@@ -215,6 +220,28 @@ TEST(FluidStatistics, PotentialEnergyAndExtentFollowGravityAndTheAxis) {
   EXPECT_FALSE(none.minPosition.has_value());
   EXPECT_FALSE(none.maxPosition.has_value());
   EXPECT_EQ(none.potentialEnergy, 0.0);
+}
+
+TEST(FluidStatistics, PressureGradientOfAPoolIsFittedInsideTheSideWallLayers) {
+  // A 16 x 20 x 16 lattice pool with p = rho0 |g| (top - y) * 1.03 inside and a wall ring three spacings wide and
+  // the bottom and top 15 % at other gradients: only the interior band counts.
+  std::vector<Vec3> x;
+  for (int i = 0; i < 16; ++i)
+    for (int j = 0; j < 20; ++j)
+      for (int k = 0; k < 16; ++k) x.emplace_back((2 * i + 1) * kR, (2 * j + 1) * kR, (2 * k + 1) * kR);
+  ParticleSystem ps(kR);
+  ParticleSet& fluid = addSet(ps, "fluid", SetKind::Fluid, x, 0);
+  AnalysisSettings settings = syntheticSettings();
+  settings.gravity = Vec3(0.0, -9.81, 0.0);
+  const double rhoG = settings.fluidDensity * 9.81, top = 0.4;
+  auto& p = fluid.addReal(field::pressure, Output);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double depth = top - x[i].y();
+    const bool ring = std::min({x[i].x(), x[i].z(), 0.32 - x[i].x(), 0.32 - x[i].z()}) < 6 * kR;
+    const double band = (x[i].y() - kR) / (0.39 - kR);
+    p[i] = rhoG * depth * (ring ? 1.6 : band < 0.15 || band > 0.85 ? 0.5 : 1.03);
+  }
+  EXPECT_NEAR(*fluidStatistics(fluid, settings).pressureGradient, 1.03, 1e-12);
 }
 
 TEST(FluidStatistics, AnalyseUsesTheSetNamedFluid) {

@@ -78,6 +78,7 @@ TEST(PoreFluidDensity, TheTemplateStatesTheDefaults) {
       SolverSettings::read(Dictionary::read(std::string(POROSPH_TEST_DATA) + "/../../etc/caseDicts/solverDict"));
   EXPECT_EQ(file.pressure.latticeCorrectedPoreFluid, SolverSettings{}.pressure.latticeCorrectedPoreFluid);
   EXPECT_FALSE(file.compatibility.unitLambdaVolumetricStress || file.compatibility.setSequentialPressure);
+  EXPECT_EQ(file.xsph, SolverSettings{}.xsph);
 }
 
 TEST(PoreFluidDensity, EitherPresetKeepsEq4AsPublished) {
@@ -106,6 +107,31 @@ TEST(PoreFluidDensity, TheKeyWinsOverDefaultAndPresetAndAnythingElseIsAnError) {
     const std::string message = e.what();
     EXPECT_NE(message.find("system/solverDict:3"), std::string::npos) << message;
     EXPECT_NE(message.find("latticeCorrected"), std::string::npos) << message;
+  }
+}
+
+double xsph(const std::string& text) { return SolverSettings::read(Dictionary::parse(text, "system/solverDict")).xsph; }
+
+TEST(Xsph, OffByDefaultAndTheKeyWinsOverAnyPreset) {
+  // Not in the paper (XsphSmoothing.hpp), and a viscosity of about 0.05 eps H^2 / dt: a case asks for it.
+  EXPECT_EQ(xsph("threads: 0\n"), 0.0);
+  EXPECT_EQ(SolverSettings{}.xsph, 0.0); // the struct states the file's default
+  EXPECT_EQ(xsph("compatibility: {preset: paper}\n"), 0.0);
+  EXPECT_EQ(xsph("xsph: 0.1\n"), 0.1);
+  EXPECT_EQ(xsph("xsph: 0.05\ncompatibility: {preset: reference}\n"), 0.05);
+  EXPECT_EQ(xsph("compatibility: {preset: paper}\nxsph: 0.2\n"), 0.2);
+}
+
+TEST(Xsph, OutsideZeroToOneIsAnInputErrorWithFileAndLine) {
+  for (const char* text : {"threads: 0\nxsph: 1.5\n", "threads: 0\nxsph: -0.1\n", "threads: 0\nxsph: strong\n"}) {
+    try {
+      xsph(text);
+      ADD_FAILURE() << "no InputError for " << text;
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find("system/solverDict:2"), std::string::npos) << message;
+      EXPECT_NE(message.find("xsph"), std::string::npos) << message;
+    }
   }
 }
 
