@@ -476,8 +476,6 @@ void Solver::writeState(const Writer& write) {
   ScopedPhase phase(phases_, "output");
   write(*this);
   lastWrittenStep_ = state_.step;
-  // A run restarted from this time searches afresh; so does this one, and both continue bit for bit.
-  search_.invalidate();
 }
 
 void Solver::stopAfterWriting(const Writer& write, const std::string& message) {

@@ -25,6 +25,16 @@ constexpr double kCellWidening = 1.0 + 1e-6;
 /// Updates searched at H alone after the candidates lasted less than two updates.
 constexpr int kPausedUpdates = 16;
 
+/// Insertion sort: a list gathered cell by cell from Morton-ordered particles is nearly ascending already.
+void sortAscending(Index* first, Index* last) {
+  for (Index* k = first + (first != last); k < last; ++k) {
+    const Index value = *k;
+    Index* m = k;
+    for (; m > first && *(m - 1) > value; --m) *m = *(m - 1);
+    *m = value;
+  }
+}
+
 struct CellIndex {
   std::int64_t ix, iy, iz;
 };
@@ -65,6 +75,15 @@ NeighbourSearch::CellGrid NeighbourSearch::makeGrid(const std::vector<const std:
     throw NumericalError(msg.str());
   }
   return grid;
+}
+
+void NeighbourSearch::clearLists(std::vector<NeighbourList>& lists) const {
+  // Emptied, not freed: the next lists reuse the memory instead of faulting in fresh pages every step.
+  lists.resize(sets_ * sets_);
+  for (NeighbourList& list : lists) {
+    list.offsets_.clear();
+    list.indices_.clear();
+  }
 }
 
 template <class AppendNeighbours>
@@ -116,8 +135,8 @@ void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positi
     filtersSinceBuild_ = 0;
   }
   ++filtersSinceBuild_;
-  // The lists at H: the candidates within H + skin that are within H now, in the candidates' order.
-  lists_.assign(sets_ * sets_, NeighbourList{});
+  // The lists at H: the candidates within H + skin that are within H now, ascending like the candidates.
+  clearLists(lists_);
   const double h2 = h_ * h_;
   for (std::size_t a = 0; a < sets_; ++a)
     for (std::size_t b = 0; b < sets_; ++b) {
@@ -159,7 +178,7 @@ void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positio
                             const std::vector<std::vector<bool>>& wanted, double radius,
                             std::vector<NeighbourList>& lists) {
   ++gridSearches_;
-  lists.assign(sets_ * sets_, NeighbourList{});
+  clearLists(lists);
   const CellGrid grid = makeGrid(positions, radius);
   const std::int64_t nx = grid.dims[0], ny = grid.dims[1], nz = grid.dims[2];
   const std::int64_t nCells = nx * ny * nz;
@@ -212,6 +231,7 @@ void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positio
       assemble(xa.size(), lists[a * sets_ + b], [&](std::size_t i, std::vector<Index>& out) {
         const Vec3& p = xa[i];
         const CellIndex c = cellOf(p);
+        const std::size_t before = out.size();
         for (std::int64_t z = std::max<std::int64_t>(c.iz - 1, 0); z <= std::min(c.iz + 1, nz - 1); ++z)
           for (std::int64_t y = std::max<std::int64_t>(c.iy - 1, 0); y <= std::min(c.iy + 1, ny - 1); ++y) {
             // The x-neighbours of one (y, z) row are consecutive cells: one contiguous range.
@@ -224,6 +244,7 @@ void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positio
               if ((p - s.x[static_cast<std::size_t>(k)]).squaredNorm() < radius2) out.push_back(j);
             }
           }
+        sortAscending(out.data() + before, out.data() + out.size());
       });
     }
   }

@@ -1,12 +1,11 @@
 #pragma once
 /// Uniform cell-grid neighbour search over several particle sets (METHOD.md §6.1): 27-cell stencil, strict
 /// ||x_ab|| < H, one compressed (CSR) list per requested ordered pair of sets.
+/// Every particle's neighbours come in ascending index order: a list is a function of the positions alone,
+/// not of how or when it was searched, so sums are reproducible and a restarted run continues bit for bit.
 /// With a skin s > 0 (Verlet lists), the grid search runs at H + s and is kept as candidates until some
 /// particle has moved s / 2 since; in between, each update only keeps the candidates within H. Where the
 /// candidates last less than two updates (a fast flow), it searches at H alone for the next 16 updates.
-/// Neighbours come in a fixed order (stencil cell of the last grid search, then index), so sums are
-/// reproducible; the caller invalidates the candidates wherever a later run must rebuild them identically
-/// (after a reordering of the particles, after writing a restartable time).
 
 #include "core/Types.hpp"
 
@@ -53,7 +52,7 @@ public:
 
   double supportRadius() const { return h_; }
 
-  /// The next update runs the grid search, whatever the particles' displacements.
+  /// The next update runs the grid search, whatever the particles' displacements (after a reordering).
   void invalidate() {
     valid_ = false;
     pausedUpdates_ = 0;
@@ -73,6 +72,8 @@ private:
              double radius, std::vector<NeighbourList>& lists);
   bool mustRebuild(const std::vector<const std::vector<Vec3>*>& positions,
                    const std::vector<std::vector<bool>>& wanted) const;
+  /// Sets² empty lists, keeping their memory.
+  void clearLists(std::vector<NeighbourList>& lists) const;
   /// Fills `list` for n particles in parallel; append(i, out) appends particle i's neighbours to out.
   template <class AppendNeighbours>
   static void assemble(std::size_t n, NeighbourList& list, const AppendNeighbours& append);
