@@ -334,7 +334,7 @@ StepContext Solver::context(double deltaT) {
                      poreFluidBias_ ? &*poreFluidBias_ : nullptr};
 }
 
-void Solver::searchNeighbours() {
+void Solver::searchNeighbours(double deltaT) {
   const bool sortNow = settings_.sortInterval > 0 && state_.step % settings_.sortInterval == 0;
   if (sortNow) {
     for (std::size_t a : dynamicSets_) particles_[a].permute(search_.mortonOrder(particles_[a].x()));
@@ -347,7 +347,8 @@ void Solver::searchNeighbours() {
     for (std::size_t b : dynamicSets_) wanted[a][b] = true;
     for (std::size_t k : boundarySets_) wanted[a][k] = true;
   }
-  search_.update(positions, wanted);
+  // How far the fastest particle (walls included) moves this step decides whether the Verlet skin pays.
+  search_.update(positions, wanted, maxSpeed() * deltaT);
 }
 
 StepContext Solver::beginStep(double deltaT) {
@@ -355,7 +356,7 @@ StepContext Solver::beginStep(double deltaT) {
   placeWalls(state_.time, deltaT);
   {
     ScopedPhase phase(phases_, "search");
-    searchNeighbours();
+    searchNeighbours(deltaT);
   }
   {
     ScopedPhase phase(phases_, "densities");

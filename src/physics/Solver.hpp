@@ -89,7 +89,7 @@ public:
 
 private:
   StepContext context(double deltaT);
-  void searchNeighbours();
+  void searchNeighbours(double deltaT);
   double maxSpeed() const;
   void measureFluidDensity();
   void logProgress(double elapsed, double startTime) const;

@@ -22,8 +22,8 @@ constexpr std::size_t kChunk = 512;
 /// 0.8999999999999999 at H = 0.1 land in cells 7 and 9), and the 27-cell stencil misses the pair. The
 /// margin exceeds the relative round-off (a few 1e-16) times the largest cell index (kMaxCells).
 constexpr double kCellWidening = 1.0 + 1e-6;
-/// Updates searched at H alone after the candidates lasted less than two updates.
-constexpr int kPausedUpdates = 16;
+/// The skin is used when the candidates will last two updates at least: 2 x 2 x largestStep < skin.
+constexpr double kStepsPerSkin = 4.0;
 
 /// Insertion sort: a list gathered cell by cell from Morton-ordered particles is nearly ascending already.
 void sortAscending(Index* first, Index* last) {
@@ -110,32 +110,26 @@ void NeighbourSearch::assemble(std::size_t n, NeighbourList& list, const AppendN
 }
 
 void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positions,
-                             const std::vector<std::vector<bool>>& wanted) {
+                             const std::vector<std::vector<bool>>& wanted, double largestStep) {
   sets_ = positions.size();
   ++updates_;
-  if (skin_ == 0.0 || pausedUpdates_ > 0) {
-    if (pausedUpdates_ > 0) --pausedUpdates_;
-    build(positions, wanted, h_, lists_);
+  if (skin_ == 0.0 || kStepsPerSkin * largestStep >= skin_) {
+    // A fast flow would cross the skin every step or two, and the grid search at H + skin would cost more
+    // than it saves: search at H, in stencil order (the mode is a function of the state, so a restarted run
+    // picks the same one).
+    valid_ = false;
+    build(positions, wanted, h_, lists_, false);
     return;
   }
   if (mustRebuild(positions, wanted)) {
-    if (valid_ && filtersSinceBuild_ < 2) {
-      // The particles cross the skin every step or two (a fast flow): the grid search at H + skin would
-      // cost more than it saves. Search at H directly for a while, then try the skin again.
-      valid_ = false;
-      pausedUpdates_ = kPausedUpdates;
-      build(positions, wanted, h_, lists_);
-      return;
-    }
-    build(positions, wanted, h_ + skin_, candidates_);
+    build(positions, wanted, h_ + skin_, candidates_, true);
     builtAt_.resize(sets_);
     for (std::size_t s = 0; s < sets_; ++s) builtAt_[s] = *positions[s];
     builtWanted_ = wanted;
     valid_ = true;
-    filtersSinceBuild_ = 0;
   }
-  ++filtersSinceBuild_;
-  // The lists at H: the candidates within H + skin that are within H now, ascending like the candidates.
+  // The lists at H: the candidates within H + skin that are within H now, ascending like the candidates, so
+  // they do not depend on when the candidates were searched.
   clearLists(lists_);
   const double h2 = h_ * h_;
   for (std::size_t a = 0; a < sets_; ++a)
@@ -176,7 +170,7 @@ bool NeighbourSearch::mustRebuild(const std::vector<const std::vector<Vec3>*>& p
 
 void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positions,
                             const std::vector<std::vector<bool>>& wanted, double radius,
-                            std::vector<NeighbourList>& lists) {
+                            std::vector<NeighbourList>& lists, bool ascending) {
   ++gridSearches_;
   clearLists(lists);
   const CellGrid grid = makeGrid(positions, radius);
@@ -244,7 +238,7 @@ void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positio
               if ((p - s.x[static_cast<std::size_t>(k)]).squaredNorm() < radius2) out.push_back(j);
             }
           }
-        sortAscending(out.data() + before, out.data() + out.size());
+        if (ascending) sortAscending(out.data() + before, out.data() + out.size());
       });
     }
   }

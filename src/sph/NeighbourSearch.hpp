@@ -1,11 +1,13 @@
 #pragma once
 /// Uniform cell-grid neighbour search over several particle sets (METHOD.md §6.1): 27-cell stencil, strict
 /// ||x_ab|| < H, one compressed (CSR) list per requested ordered pair of sets.
-/// Every particle's neighbours come in ascending index order: a list is a function of the positions alone,
-/// not of how or when it was searched, so sums are reproducible and a restarted run continues bit for bit.
 /// With a skin s > 0 (Verlet lists), the grid search runs at H + s and is kept as candidates until some
-/// particle has moved s / 2 since; in between, each update only keeps the candidates within H. Where the
-/// candidates last less than two updates (a fast flow), it searches at H alone for the next 16 updates.
+/// particle has moved s / 2 since; in between, each update only keeps the candidates within H. A flow that
+/// would cross the skin within two updates is searched at H every update instead.
+/// Neighbours come in a fixed order, so sums are reproducible: stencil cell, then index, for a search at H;
+/// ascending index with the skin, where candidates searched earlier must give the same lists as a search now.
+/// Either way a list is a function of the positions and of the largest step, so a run restarted at any step
+/// continues bit for bit.
 
 #include "core/Types.hpp"
 
@@ -41,8 +43,10 @@ public:
   explicit NeighbourSearch(double supportRadius, double skin = 0.0) : h_(supportRadius), skin_(skin) {}
 
   /// Positions of every set, by set number. `wanted[a][b]` says whether the list a->b is needed.
-  /// Lists of a set with itself exclude the particle itself.
-  void update(const std::vector<const std::vector<Vec3>*>& positions, const std::vector<std::vector<bool>>& wanted);
+  /// Lists of a set with itself exclude the particle itself. `largestStep` bounds how far any particle moves
+  /// before the next update [m] (largest speed times the step): the skin is used when it is below skin / 4.
+  void update(const std::vector<const std::vector<Vec3>*>& positions, const std::vector<std::vector<bool>>& wanted,
+              double largestStep = 0.0);
 
   /// The list of set a against set b (empty if it was not requested).
   const NeighbourList& list(std::size_t a, std::size_t b) const { return lists_[a * sets_ + b]; }
@@ -53,10 +57,7 @@ public:
   double supportRadius() const { return h_; }
 
   /// The next update runs the grid search, whatever the particles' displacements (after a reordering).
-  void invalidate() {
-    valid_ = false;
-    pausedUpdates_ = 0;
-  }
+  void invalidate() { valid_ = false; }
   /// Updates so far, and the grid searches among them (all of them without a skin).
   std::size_t updates() const { return updates_; }
   std::size_t gridSearches() const { return gridSearches_; }
@@ -67,9 +68,10 @@ private:
     std::int64_t dims[3] = {0, 0, 0};
   };
   CellGrid makeGrid(const std::vector<const std::vector<Vec3>*>& positions, double radius) const;
-  /// The grid search at `radius` into `lists`.
+  /// The grid search at `radius` into `lists`; each particle's neighbours in ascending index order or in
+  /// stencil order.
   void build(const std::vector<const std::vector<Vec3>*>& positions, const std::vector<std::vector<bool>>& wanted,
-             double radius, std::vector<NeighbourList>& lists);
+             double radius, std::vector<NeighbourList>& lists, bool ascending);
   bool mustRebuild(const std::vector<const std::vector<Vec3>*>& positions,
                    const std::vector<std::vector<bool>>& wanted) const;
   /// Sets² empty lists, keeping their memory.
@@ -86,8 +88,6 @@ private:
   std::vector<std::vector<Vec3>> builtAt_;          ///< positions at the last grid search
   std::vector<std::vector<bool>> builtWanted_;      ///< the lists requested then
   bool valid_ = false;
-  int filtersSinceBuild_ = 0; ///< updates served by the current candidates
-  int pausedUpdates_ = 0;     ///< updates still to search at H alone (the skin did not pay)
   std::size_t updates_ = 0;
   std::size_t gridSearches_ = 0;
 };
