@@ -176,7 +176,8 @@ struct PressureScene {
     solver->step(kDeltaT);
 
     ParticleSystem& ps = solver->particles();
-    ctx = std::make_unique<StepContext>(StepContext{ps, search, gradients, kernel, fluid, kDeltaT, {0}, {1}, {nullptr, nullptr}, {}});
+    ctx = std::make_unique<StepContext>(
+        StepContext{ps, search, gradients, kernel, fluid, kDeltaT, {0}, {1}, {nullptr, nullptr}, {}});
     search.update({&ps[0].x(), &ps[1].x()}, {{true, true}, {false, false}});
     computeDensities(*ctx, gradients);
     PressureSolver(PressureSettings{}).predictDensities(*ctx);

@@ -59,7 +59,8 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
                const SolverSettings& settings, const TimeControl& control, const RunState& start,
                std::vector<ObjectMotion> wallMotions, std::vector<RigidBody::Spec> rigidBodies)
     : particles_(std::move(particles)), fluid_(fluid), materials_(std::move(materials)), settings_(settings),
-      control_(control), state_(start), kernel_(particles_.supportRadius()), search_(particles_.supportRadius(), settings.searchSkin * particles_.supportRadius()),
+      control_(control), state_(start), kernel_(particles_.supportRadius()),
+      search_(particles_.supportRadius(), settings.searchSkin * particles_.supportRadius()),
       implicit_(settings.implicit, makeImplicitTerms()), pressure_(settings.pressure),
       wallMotions_(std::move(wallMotions)), flatWallShare_(flatWallShare(kernel_, particles_.spacing())) {
   hasRigidBodies_ = !rigidBodies.empty();

@@ -71,9 +71,9 @@ struct SolverSettings {
   ImplicitSettings implicit;
   CompatibilitySettings compatibility;
   HealthSettings health;
-  int sortInterval = 500; ///< Morton reorder period in steps, 0 = never
+  int sortInterval = 500;  ///< Morton reorder period in steps, 0 = never
   double searchSkin = 0.1; ///< Verlet skin of the neighbour lists, as a fraction of H; 0 = search every step
-  int threads = 0;        ///< OpenMP threads, 0 = the OpenMP default
+  int threads = 0;         ///< OpenMP threads, 0 = the OpenMP default
 
   /// Reads and validates every key; unknown keys are errors.
   static SolverSettings read(const Dictionary& dict);

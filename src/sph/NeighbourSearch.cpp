@@ -49,7 +49,7 @@ struct SortedSet {
 } // namespace
 
 NeighbourSearch::CellGrid NeighbourSearch::makeGrid(const std::vector<const std::vector<Vec3>*>& positions,
-                                                     double radius) const {
+                                                    double radius) const {
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
   Vec3 hi = Vec3::Constant(std::numeric_limits<double>::lowest());
   for (const auto* xs : positions)
@@ -69,8 +69,8 @@ NeighbourSearch::CellGrid NeighbourSearch::makeGrid(const std::vector<const std:
   }
   if (cells > static_cast<double>(kMaxCells)) {
     std::ostringstream msg;
-    msg << "neighbour search: particles span [" << lo.transpose() << "] to [" << hi.transpose()
-        << "] m, more than " << kMaxCells << " cells of size " << cellSize
+    msg << "neighbour search: particles span [" << lo.transpose() << "] to [" << hi.transpose() << "] m, more than "
+        << kMaxCells << " cells of size " << cellSize
         << " m; particles are leaving the domain (reduce deltaT or maxCourant, or close the container)";
     throw NumericalError(msg.str());
   }

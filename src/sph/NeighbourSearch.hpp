@@ -84,9 +84,9 @@ private:
   double skin_;
   std::size_t sets_ = 0;
   std::vector<NeighbourList> lists_;
-  std::vector<NeighbourList> candidates_;           ///< lists at H + skin from the last grid search
-  std::vector<std::vector<Vec3>> builtAt_;          ///< positions at the last grid search
-  std::vector<std::vector<bool>> builtWanted_;      ///< the lists requested then
+  std::vector<NeighbourList> candidates_;      ///< lists at H + skin from the last grid search
+  std::vector<std::vector<Vec3>> builtAt_;     ///< positions at the last grid search
+  std::vector<std::vector<bool>> builtWanted_; ///< the lists requested then
   bool valid_ = false;
   std::size_t updates_ = 0;
   std::size_t gridSearches_ = 0;

@@ -11,7 +11,9 @@
 namespace poro {
 namespace {
 
-SolverSettings read(const std::string& text) { return SolverSettings::read(Dictionary::parse(text, "system/solverDict")); }
+SolverSettings read(const std::string& text) {
+  return SolverSettings::read(Dictionary::parse(text, "system/solverDict"));
+}
 
 TEST(SearchSettings, SkinDefaultsToATenthOfHAndZeroTurnsItOff) {
   EXPECT_DOUBLE_EQ(read("threads: 0\n").searchSkin, 0.1);
