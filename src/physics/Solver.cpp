@@ -348,7 +348,9 @@ void Solver::searchNeighbours(double deltaT) {
     for (std::size_t b : dynamicSets_) wanted[a][b] = true;
     for (std::size_t k : boundarySets_) wanted[a][k] = true;
   }
-  // How far the fastest particle (walls included) moves this step decides whether the Verlet skin pays.
+  // How far the fastest particle (walls included) moves this step decides whether the Verlet skin pays. It is
+  // measured afresh rather than taken from the last step's report: a restarted run has no last step, and must
+  // choose as the uninterrupted one did.
   search_.update(positions, wanted, maxSpeed() * deltaT);
 }
 
