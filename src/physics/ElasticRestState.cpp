@@ -44,9 +44,12 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
   offsets_.assign(n + 1, 0);
   for (std::size_t s = 0; s < n; ++s) offsets_[s + 1] = offsets_[s] + static_cast<std::int64_t>(lists[s].size());
   neighbours_.resize(static_cast<std::size_t>(offsets_[n]));
-  restGradients_.resize(neighbours_.size());
+  weightedGradients_.resize(neighbours_.size());
   volume_.resize(n);
+  shepard_.resize(n);
   correction_.resize(n);
+  inverts_.resize(n);
+  gradientSum_.resize(n);
   parallel::forEach(n, [&](std::size_t s) {
     double shepard = kernel.w0();
     std::size_t pair = begin(s);
@@ -54,17 +57,26 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
       const Vec3 xst = rest[s] - rest[static_cast<std::size_t>(t)];
       shepard += kernel.w(xst);
       neighbours_[pair] = t;
-      restGradients_[pair++] = kernel.grad(xst);
+      weightedGradients_[pair++] = kernel.grad(xst);
     }
+    shepard_[s] = shepard;
     volume_[s] = 1.0 / shepard;
   });
   parallel::forEach(n, [&](std::size_t s) {
+    for (std::size_t pair = begin(s); pair < end(s); ++pair)
+      weightedGradients_[pair] *= volume_[static_cast<std::size_t>(neighbours_[pair])];
+  });
+  parallel::forEach(n, [&](std::size_t s) {
     Mat3 moment = Mat3::Zero();
+    Vec3 sum = Vec3::Zero();
     for (std::size_t pair = begin(s); pair < end(s); ++pair) {
       const std::size_t t = static_cast<std::size_t>(neighbours_[pair]);
-      moment += volume_[t] * restGradients_[pair] * (rest[t] - rest[s]).transpose();
+      moment += weightedGradients_[pair] * (rest[t] - rest[s]).transpose();
+      sum += weightedGradients_[pair];
     }
-    correction_[s] = std::abs(moment.determinant()) > kDeterminantThreshold ? Mat3(moment.inverse()) : Mat3::Identity();
+    inverts_[s] = std::abs(moment.determinant()) > kDeterminantThreshold;
+    correction_[s] = inverts_[s] ? Mat3(moment.inverse()) : Mat3::Identity();
+    gradientSum_[s] = sum;
   });
 }
 

@@ -3,7 +3,9 @@
 ///   N0(s): neighbours of s within H at X with the same object id, ordered by persistent id;
 ///   V0_s = 1/(W(0) + sum_{t in N0(s)} W(X_s - X_t))                 (Shepard rest volume);
 ///   L_s = (sum_{t in N0(s)} V0_t gradW(X_s - X_t) (x) (X_t - X_s))^-1 (kernel-gradient correction, I if
-///         |det| <= 1e-9).
+///         |det| <= 1e-9);
+///   G0_s = sum_{t in N0(s)} V0_t gradW(X_s - X_t).
+/// Every term uses the rest gradients weighted by the neighbour's rest volume, so they are stored that way.
 /// Everything is a function of X, ids and object ids, summed in persistent-id order, so a rebuild after a
 /// Morton sort, a particle removal or a restart gives the same numbers bit for bit.
 
@@ -23,13 +25,17 @@ public:
   bool update(const ParticleSet& set, const CubicKernel& kernel);
 
   std::size_t size() const { return volume_.size(); }
-  /// N0(s) as indices into the set's current order, and the rest gradient gradW(X_s - X_t) per pair.
+  /// N0(s) as indices into the set's current order, and V0_t gradW(X_s - X_t) per pair.
   std::size_t begin(std::size_t s) const { return static_cast<std::size_t>(offsets_[s]); }
   std::size_t end(std::size_t s) const { return static_cast<std::size_t>(offsets_[s + 1]); }
   Index neighbour(std::size_t pair) const { return neighbours_[pair]; }
-  const Vec3& restGradient(std::size_t pair) const { return restGradients_[pair]; }
+  const Vec3& weightedGradient(std::size_t pair) const { return weightedGradients_[pair]; }
   double volume(std::size_t s) const { return volume_[s]; }
+  double inverseVolume(std::size_t s) const { return shepard_[s]; }
   const Mat3& correction(std::size_t s) const { return correction_[s]; }
+  /// True where L_s is the inverse of the rest moment (false where it fell back to I).
+  bool inverts(std::size_t s) const { return inverts_[s] != 0; }
+  const Vec3& gradientSum(std::size_t s) const { return gradientSum_[s]; }
 
 private:
   void build(const ParticleSet& set, const CubicKernel& kernel);
@@ -37,9 +43,12 @@ private:
   std::vector<std::int64_t> ids_; ///< persistent ids in the order of the last build
   std::vector<std::int64_t> offsets_;
   std::vector<Index> neighbours_;
-  std::vector<Vec3> restGradients_;
+  std::vector<Vec3> weightedGradients_;
   std::vector<double> volume_;
+  std::vector<double> shepard_; ///< 1/V0_s
   std::vector<Mat3> correction_;
+  std::vector<char> inverts_;
+  std::vector<Vec3> gradientSum_;
 };
 
 } // namespace poro

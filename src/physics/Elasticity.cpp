@@ -78,25 +78,31 @@ void Elasticity::prepareBody(const StepContext& ctx, Body& body) {
   body.stress.resize(n);
   parallel::forEach(n, [&](std::size_t s) {
     // Rotation first (METHOD.md §6.5.2): F = [sum V0_t (x_t - x_s) gradW0^T] L^T.
-    Mat3 deformed = Mat3::Zero(), displaced = Mat3::Zero();
+    Mat3 deformed = Mat3::Zero();
     for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
       const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
-      addOuter(deformed, rest.volume(t) * (x[t] - x[s]), rest.restGradient(pair));
+      addOuter(deformed, x[t] - x[s], rest.weightedGradient(pair));
     }
     const Mat3& correction = rest.correction(s);
-    rotation[s] = extractRotation(deformed * correction.transpose(), rotation[s]);
+    const Mat3 f = deformed * correction.transpose();
+    rotation[s] = extractRotation(f, rotation[s]);
     const Mat3 rl = rotation[s] * correction;
-    for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
-      const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
-      const Vec3 offset = (x[t] - x[s]) - rotation[s] * (restX[t] - restX[s]);
-      addOuter(displaced, rest.volume(t) * offset, rest.restGradient(pair));
+    // F^ = I + displaced RL^T, eps = sym(F^) - I, with displaced = sum V0_t ((x_t - x_s) - R(X_t - X_s)) gradW0^T.
+    // That is deformed - R M^T for the rest moment M = L^-1, so where L inverts M, F^ = F R^T: no second pass.
+    if (rest.inverts(s)) {
+      body.strain[s] = symmetric(f * rotation[s].transpose()) - Mat3::Identity();
+    } else {
+      Mat3 displaced = Mat3::Zero();
+      for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
+        const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
+        addOuter(displaced, (x[t] - x[s]) - rotation[s] * (restX[t] - restX[s]), rest.weightedGradient(pair));
+      }
+      body.strain[s] = symmetric(displaced * rl.transpose());
     }
     const double sat = saturation[s];
     body.shear[s] = std::max(1.0 + material.shearSoftening * sat, kLameFloor) * mu;
     body.volumetric[s] = std::max(1.0 + material.volumeSoftening * sat, kLameFloor) * volumetricModulus;
     body.rotatedCorrection[s] = rl;
-    // F^ = I + displaced RL^T, eps = sym(F^) - I.
-    body.strain[s] = symmetric(displaced * rl.transpose());
     const Mat3 stress =
         stressOf(body.strain[s], body.shear[s], body.volumetric[s]) - (bloating * sat) * Mat3::Identity();
     body.rhsStress[s] = stress * rl;
@@ -110,12 +116,11 @@ Mat3 Elasticity::strain(std::size_t s, std::size_t i) const {
 }
 
 Vec3 Elasticity::force(const Body& body, const std::vector<Mat3>& m, std::size_t s) const {
+  // The M_s part of every pair sums to M_s G0_s.
   const ElasticRestState& rest = rest_[body.set];
-  Vec3 sum = Vec3::Zero();
-  for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
-    const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
-    sum += rest.volume(t) * ((m[s] + m[t]) * rest.restGradient(pair));
-  }
+  Vec3 sum = m[s] * rest.gradientSum(s);
+  for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair)
+    sum += m[static_cast<std::size_t>(rest.neighbour(pair))] * rest.weightedGradient(pair);
   return rest.volume(s) * sum;
 }
 
@@ -131,7 +136,7 @@ void Elasticity::addApply(const linalg::BlockVector& u, const linalg::BlockVecto
       Mat3 gradient = Mat3::Zero();
       for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
         const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
-        addOuter(gradient, rest.volume(t) * (v[t] - v[s]), rest.restGradient(pair));
+        addOuter(gradient, v[t] - v[s], rest.weightedGradient(pair));
       }
       const Mat3& rl = body.rotatedCorrection[s];
       const Mat3 eps = symmetric(dt * gradient * rl.transpose());
@@ -148,16 +153,20 @@ void Elasticity::addDiagonal(const linalg::BlockDiagonal& d) const {
     Mat3* out = d[body.part].data;
     parallel::forEach(d[body.part].size, [&](std::size_t s) {
       // D_s = dt^2 [V0_s B_s(G_s) + V0_s^2 sum_t V0_t B_t(g_ts)], G_s = sum_t V0_t g_st (METHOD.md §6.5.8).
-      Vec3 gradientSum = Vec3::Zero();
+      // B is quadratic in g, so V0_t B_t(g_ts) = B_t(V0_t g_ts) / V0_t with the stored weighted gradients; the
+      // identity parts of the blocks are summed as one scalar.
       Mat3 neighbours = Mat3::Zero();
+      double identityPart = 0.0;
       for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
         const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
-        gradientSum += rest.volume(t) * rest.restGradient(pair);
-        const Vec3 gts = body.rotatedCorrection[t] * rest.restGradient(pair);
-        neighbours += rest.volume(t) * stiffnessBlock(gts, body.shear[t], body.volumetric[t]);
+        const Vec3 gts = body.rotatedCorrection[t] * rest.weightedGradient(pair);
+        const double inverseVolume = rest.inverseVolume(t);
+        identityPart += body.shear[t] * inverseVolume * gts.squaredNorm();
+        addOuter(neighbours, ((body.shear[t] + body.volumetric[t]) * inverseVolume) * gts, gts);
       }
+      neighbours.diagonal().array() += identityPart;
       const double v0 = rest.volume(s);
-      const Vec3 g = body.rotatedCorrection[s] * gradientSum;
+      const Vec3 g = body.rotatedCorrection[s] * rest.gradientSum(s);
       out[s] += dt2 * (v0 * stiffnessBlock(g, body.shear[s], body.volumetric[s]) + v0 * v0 * neighbours);
     });
   }

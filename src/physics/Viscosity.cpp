@@ -62,8 +62,9 @@ void Viscosity::prepareMember(const StepContext& ctx, Member& member, double mu,
     }
   });
 
-  member.wallCoefficient.assign(ctx.boundarySets.size(), {});
-  for (std::size_t w = 0; w < ctx.boundarySets.size(); ++w) {
+  // Without a wall viscosity the wall pairs contribute nothing: no coefficients, and no wall loops below.
+  member.wallCoefficient.assign(muWall > 0.0 ? ctx.boundarySets.size() : 0, {});
+  for (std::size_t w = 0; w < member.wallCoefficient.size(); ++w) {
     const std::size_t k = ctx.boundarySets[w];
     const NeighbourList& list = ctx.search.list(member.set, k);
     const auto& factors = ctx.gradients.of(member.set, k);
@@ -94,7 +95,8 @@ void Viscosity::addApply(const linalg::BlockVector& u, const linalg::BlockVector
     Vec3* out = au[member.part].data;
     const NeighbourList& same = ctx.search.list(member.set, member.set);
     std::vector<const NeighbourList*> walls;
-    for (std::size_t k : ctx.boundarySets) walls.push_back(&ctx.search.list(member.set, k));
+    for (std::size_t w = 0; w < member.wallCoefficient.size(); ++w)
+      walls.push_back(&ctx.search.list(member.set, ctx.boundarySets[w]));
     parallel::forEach(u[member.part].size, [&](std::size_t i) {
       Vec3 force = Vec3::Zero();
       std::size_t p = same.offset(i);
@@ -130,7 +132,7 @@ void Viscosity::addDiagonal(const linalg::BlockDiagonal& d) const {
         const Vec3 xij = x[i] - x[static_cast<std::size_t>(j)];
         addOuter(block, member.pairCoefficient[p++] * xij, xij);
       }
-      for (std::size_t w = 0; w < ctx.boundarySets.size(); ++w) {
+      for (std::size_t w = 0; w < member.wallCoefficient.size(); ++w) {
         const NeighbourList& list = ctx.search.list(member.set, ctx.boundarySets[w]);
         const auto& xk = ctx.particles[ctx.boundarySets[w]].x();
         std::size_t q = list.offset(i);
@@ -149,7 +151,7 @@ void Viscosity::addWallReactions(const linalg::BlockVector& u, std::vector<std::
   for (const Member& member : members_) {
     const auto& x = ctx.particles[member.set].x();
     const Vec3* uf = u[member.part].data;
-    for (std::size_t w = 0; w < ctx.boundarySets.size(); ++w) {
+    for (std::size_t w = 0; w < member.wallCoefficient.size(); ++w) {
       const std::size_t k = ctx.boundarySets[w];
       const NeighbourList& list = ctx.search.list(member.set, k);
       const auto& xk = ctx.particles[k].x();
@@ -175,7 +177,7 @@ void Viscosity::addRhs(const linalg::BlockVector& b) const {
   for (const Member& member : members_) {
     const auto& x = ctx.particles[member.set].x();
     Vec3* out = b[member.part].data;
-    for (std::size_t w = 0; w < ctx.boundarySets.size(); ++w) {
+    for (std::size_t w = 0; w < member.wallCoefficient.size(); ++w) {
       const std::size_t k = ctx.boundarySets[w];
       const NeighbourList& list = ctx.search.list(member.set, k);
       const auto& xk = ctx.particles[k].x();

@@ -24,7 +24,7 @@ std::vector<double> deformedVolumes(const ParticleSet& set, double particleRadiu
     Mat3 f = Mat3::Zero();
     for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
       const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
-      f += rest.volume(t) * (x[t] - x[s]) * (rest.correction(s) * rest.restGradient(pair)).transpose();
+      f += (x[t] - x[s]) * (rest.correction(s) * rest.weightedGradient(pair)).transpose();
     }
     // Fewer than three rest neighbours cannot give a gradient: L_s = I then, and F would be meaningless.
     const double det = rest.end(s) - rest.begin(s) >= 3 ? f.determinant() : 1.0;
