@@ -13,6 +13,20 @@ namespace poro {
 
 namespace {
 const char* const kResidual = "pressureResidual"; ///< max(-r_a, 0): the compression left after the sweep's pressure
+const char* const kPreviousPi = "piPreviousSweep"; ///< pi of the sweep before, for the Chebyshev extrapolation
+
+/// The first sweep Chebyshev extrapolates. The sweeps before it are plain relaxed Jacobi, so a step that converges
+/// within them (most steps of a moving flow) is solved exactly as without acceleration, with Jacobi's smaller
+/// single-particle errors; the slowly converging steps (water at rest, deep pools, impacts) are accelerated.
+constexpr int kFirstChebyshevSweep = 4;
+
+/// Chebyshev weight of sweep k (Golub and Varga 1961) for the convergence factor estimate rho: 1 before the
+/// first accelerated sweep, 2/(2 - rho^2) at it, then 4/(4 - rho^2 w_{k-1}); it tends to 2/(1 + sqrt(1 - rho^2)).
+double chebyshevWeight(int sweep, double rho, double previous) {
+  if (sweep < kFirstChebyshevSweep) return 1.0;
+  if (sweep == kFirstChebyshevSweep) return 2.0 / (2.0 - rho * rho);
+  return 4.0 / (4.0 - rho * rho * previous);
+}
 
 /// A dynamic neighbour set of set a with its coupling and per-pair gradient factors.
 struct PartnerView {
@@ -90,6 +104,7 @@ void PressureSolver::registerFields(ParticleSet& set, const CompatibilitySetting
   set.addReal(field::rhoStar);
   set.addVec3(field::accelP, compatibility.setSequentialPressure ? Restart : Scratch);
   set.addReal(kResidual);
+  set.addReal(kPreviousPi);
 }
 
 void PressureSolver::predictDensities(const StepContext& ctx) const {
@@ -219,7 +234,9 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
   const double omega = settings_.relaxation;
   const double tolerance = settings_.maxDensityError / 100.0;
   PressureStats stats;
+  double weight = 1.0;
   for (int it = 1; it <= settings_.maxIterations; ++it) {
+    if (settings_.chebyshev) weight = chebyshevWeight(it, settings_.spectralRadius, weight);
     computeAccelerations(ctx, sets);
     // Residuals use a^p of the sweep's start only, so updating pi set by set is pure Jacobi across sets.
     double worstMean = 0.0, worstMax = 0.0;
@@ -232,6 +249,7 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
       const auto& accel = set.vec3(field::accelP);
       auto& residual = set.real(kResidual);
       auto& pi = set.real(field::pi);
+      auto& previousPi = set.real(kPreviousPi);
       const auto& alpha = set.real(field::alpha);
       const std::int64_t* fixed = fixedFlags(set);
       const double volume = set.particleVolume;
@@ -252,7 +270,14 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
         const double api = dt2 * (accel[i].dot(gradSum[i]) - volume * others);
         const double r = (1.0 - rhoStar[i]) - api;
         residual[i] = std::max(-r, 0.0);
-        pi[i] = std::max(pi[i] - omega * r * alpha[i] / dt2, 0.0);
+        const double jacobi = std::max(pi[i] - omega * r * alpha[i] / dt2, 0.0);
+        // Chebyshev: pi^{k+1} = max(w (jacobi - pi^{k-1}) + pi^{k-1}, 0); the same fixed point as Jacobi's. Only
+        // where pi was and stays positive: extrapolating a particle that just left or entered the clamped set
+        // overshoots it (measured at r = 1 cm: larger single-particle errors, no fewer sweeps).
+        const double older = previousPi[i];
+        previousPi[i] = pi[i];
+        const bool extrapolate = weight != 1.0 && older > 0.0 && jacobi > 0.0;
+        pi[i] = extrapolate ? std::max(weight * (jacobi - older) + older, 0.0) : jacobi;
         if (contact) { // the wall-share constraint D* <= D^max with the same a^p (WallContact.hpp)
           const double g2 = wallGradient[i].squaredNorm();
           const double rc = (wallLimit[i] - wallStar[i]) - dt2 * accel[i].dot(wallGradient[i]);

@@ -1,7 +1,9 @@
 #pragma once
 /// Porous IISPH pressure solve (METHOD.md §6.6, §6.7; Eq. 5-8): predicted densities, then relaxed Jacobi
-/// sweeps on pi = rho^max p / rho^2, clamped at 0, warm-started, every set updated together.
-/// Keys: system/solverDict pressure.{maxDensityError, minIterations, maxIterations, relaxation, warmStart};
+/// sweeps on pi = rho^max p / rho^2, clamped at 0, warm-started, every set updated together; from the fourth sweep
+/// on, Chebyshev-accelerated unless pressure.acceleration is none (it is under preset reference).
+/// Keys: system/solverDict pressure.{maxDensityError, minIterations, maxIterations, relaxation, warmStart,
+/// acceleration, spectralRadius};
 /// compatibility.pressureSweep setSequential solves the sets one after another (fluid first, then the porous
 /// materials in file order), each against the others' latest a^p; pressureWarmStartCap reference caps the
 /// warm start (METHOD.md §10).

@@ -53,6 +53,9 @@ SolverSettings SolverSettings::read(const Dictionary& dict) {
   if (auto c = dict.optionalSubDict("compatibility")) {
     s.compatibility = readCompatibility(*c);
     if (c->has("preset")) s.pressure.latticeCorrectedPoreFluid = false;
+    // The reference preset is the authors' iteration sweep for sweep (METHOD.md §10).
+    if (c->has("preset") && c->getWord("preset", {"paper", "reference"}, "paper") == "reference")
+      s.pressure.chebyshev = false;
   }
   if (auto p = dict.optionalSubDict("pressure")) {
     auto& ps = s.pressure;
@@ -64,6 +67,8 @@ SolverSettings SolverSettings::read(const Dictionary& dict) {
                                    "), got " + std::to_string(ps.minIterations));
     ps.relaxation = p->getReal("relaxation", ps.relaxation, Range{0.0, 1.0, true, false});
     ps.warmStart = p->getReal("warmStart", ps.warmStart, Range::closed(0.0, 1.0));
+    ps.chebyshev = readSwitch(*p, "acceleration", "none", "chebyshev", ps.chebyshev);
+    ps.spectralRadius = p->getReal("spectralRadius", ps.spectralRadius, Range::open(0.0, 1.0));
     ps.latticeCorrectedPoreFluid =
         readSwitch(*p, "poreFluidDensity", "paper", "latticeCorrected", ps.latticeCorrectedPoreFluid);
     p->checkUnknownKeys();

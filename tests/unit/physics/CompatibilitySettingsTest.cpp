@@ -79,6 +79,8 @@ TEST(PoreFluidDensity, TheTemplateStatesTheDefaults) {
   EXPECT_EQ(file.pressure.latticeCorrectedPoreFluid, SolverSettings{}.pressure.latticeCorrectedPoreFluid);
   EXPECT_FALSE(file.compatibility.unitLambdaVolumetricStress || file.compatibility.setSequentialPressure);
   EXPECT_EQ(file.xsph, SolverSettings{}.xsph);
+  EXPECT_EQ(file.pressure.chebyshev, SolverSettings{}.pressure.chebyshev);
+  EXPECT_EQ(file.pressure.spectralRadius, SolverSettings{}.pressure.spectralRadius);
 }
 
 TEST(PoreFluidDensity, EitherPresetKeepsEq4AsPublished) {
@@ -107,6 +109,33 @@ TEST(PoreFluidDensity, TheKeyWinsOverDefaultAndPresetAndAnythingElseIsAnError) {
     const std::string message = e.what();
     EXPECT_NE(message.find("system/solverDict:3"), std::string::npos) << message;
     EXPECT_NE(message.find("latticeCorrected"), std::string::npos) << message;
+  }
+}
+
+TEST(PressureAcceleration, ChebyshevByDefaultAndInPaperModeJacobiAloneUnderTheReferencePreset) {
+  // The same fixed point and tolerance as the sweeps alone (PressureAccelerationTest.cpp); the reference preset
+  // reproduces the authors' iteration sweep for sweep (METHOD.md §10).
+  EXPECT_TRUE(pressure("threads: 0\n").chebyshev);
+  EXPECT_TRUE(SolverSettings{}.pressure.chebyshev); // the struct states the file's default
+  EXPECT_EQ(pressure("threads: 0\n").spectralRadius, 0.9);
+  EXPECT_TRUE(pressure("compatibility: {preset: paper}\n").chebyshev);
+  EXPECT_FALSE(pressure("compatibility: {preset: reference}\n").chebyshev);
+  EXPECT_TRUE(pressure("compatibility: {pressureSweep: setSequential}\n").chebyshev); // a switch is not a preset
+  EXPECT_FALSE(pressure("pressure: {acceleration: none}\n").chebyshev);
+  EXPECT_TRUE(pressure("pressure: {acceleration: chebyshev}\ncompatibility: {preset: reference}\n").chebyshev);
+  EXPECT_EQ(pressure("pressure: {spectralRadius: 0.98}\n").spectralRadius, 0.98);
+}
+
+TEST(PressureAcceleration, BadValuesAreInputErrorsWithFileAndLine) {
+  for (const char* text : {"threads: 0\npressure: {acceleration: conjugateGradients}\n",
+                           "threads: 0\npressure: {spectralRadius: 1}\n", "threads: 0\npressure: {spectralRadius: 0}\n"}) {
+    try {
+      pressure(text);
+      ADD_FAILURE() << "no InputError for " << text;
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find("system/solverDict:2"), std::string::npos) << message;
+    }
   }
 }
 
