@@ -4,7 +4,8 @@
 ///   - computeDensities, PressureSolver::predictDensities and PressureSolver::solve with a fixed number of
 ///     Jacobi sweeps (minIterations = maxIterations), on fields prepared by one Solver::step;
 ///   - the 3x3 outer-product sum of the pair loops (viscosity, drag and elastic blocks): Eigen's expression
-///     against addOuter (core/Types.hpp), over 40 pairs as one particle has.
+///     against addOuter (core/Types.hpp), over 40 pairs as one particle has;
+///   - the rotation extraction of elastic bodies, warm-started as a step calls it (single thread).
 /// Every benchmark takes the OpenMP thread count as its first argument. items_per_second counts fluid
 /// particles processed (for the pressure solve: fluid particles x sweeps). Wall time is what is reported
 /// (UseRealTime), since the work runs on OpenMP threads.
@@ -18,9 +19,12 @@
 #include "physics/Densities.hpp"
 #include "physics/FieldNames.hpp"
 #include "physics/PressureSolver.hpp"
+#include "physics/RotationExtraction.hpp"
 #include "physics/Solver.hpp"
 
 #include <benchmark/benchmark.h>
+
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cstdint>
@@ -280,7 +284,33 @@ void BM_OuterProductSum(benchmark::State& state) {
   state.SetLabel(eigenExpression ? "m += c * (a * b.transpose())" : "addOuter(m, c * a, b)");
 }
 
+/// F = Q (I + eps) for 1024 particles, Q a random rotation and eps a random symmetric strain of 1e-3, each
+/// warm-started from Q turned by 1e-4 rad: what Elasticity::prepareBody asks of the extraction in a slow flow.
+struct RotationCalls {
+  std::vector<Mat3> f, previous;
+  RotationCalls() {
+    std::uint64_t k = 0;
+    const auto u = [&]() { return static_cast<double>(splitMix64(k++) >> 11) * 0x1.0p-53 - 0.5; };
+    const auto axis = [&]() { return Vec3(u(), u(), u()).normalized(); };
+    for (int p = 0; p < 1024; ++p) {
+      const Mat3 q = Eigen::AngleAxisd(6.0 * u(), axis()).toRotationMatrix();
+      Mat3 eps;
+      eps << u(), u(), u(), u(), u(), u(), u(), u(), u();
+      f.push_back(q * (Mat3::Identity() + 1e-3 * (eps + eps.transpose())));
+      previous.push_back(Eigen::AngleAxisd(1e-4, axis()).toRotationMatrix() * q);
+    }
+  }
+};
+
+void BM_RotationExtraction(benchmark::State& state) {
+  const RotationCalls calls;
+  for (auto _ : state)
+    for (std::size_t p = 0; p < calls.f.size(); ++p) benchmark::DoNotOptimize(extractRotation(calls.f[p], calls.previous[p]));
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(calls.f.size()));
+}
+
 BENCHMARK(BM_OuterProductSum)->ArgName("addOuter")->Arg(0)->Arg(1);
+BENCHMARK(BM_RotationExtraction);
 BENCHMARK(BM_Densities)->Apply(threadCounts);
 BENCHMARK(BM_PredictDensities)->Apply(threadCounts);
 BENCHMARK(BM_PressureSolve)->ArgNames({"threads", "sweeps"})->ArgsProduct({{1, 2}, {1, 10}})->Apply(timing);
