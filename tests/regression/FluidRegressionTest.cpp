@@ -32,6 +32,7 @@ protected:
     runner_ = new CaseRunner("fluid/hydrostaticTank", "HydrostaticTank");
     runner_->setKey("constant/fluidProperties", "viscosity", "5");
     runner_->setKey("system/solverDict", "xsph", "0");
+    runner_->setKey("system/solverDict", "  maxDensityError", "0.01"); // the default, which the checks below state
     runner_->setKey("system/controlDict", "endTime", "1.5");
     runner_->setKey("system/controlDict", "writeInterval", "0.02"); // 25 snapshots over the last 0.5 s
     ASSERT_EQ(runner_->sample(), 0) << runner_->read("log.sampleParticles");
