@@ -51,11 +51,13 @@ void Viscosity::prepareMember(const StepContext& ctx, Member& member, double mu,
   const NeighbourList& same = ctx.search.list(member.set, member.set);
   const auto& sameFactors = ctx.gradients.of(member.set, member.set);
   member.pairCoefficient.resize(same.totalPairs());
+  std::vector<double> volumeOf(set.size()); // m/rho once per particle, not once per pair
+  parallel::forEach(set.size(), [&](std::size_t i) { volumeOf[i] = m / rho[i]; });
   parallel::forEach(set.size(), [&](std::size_t i) {
     std::size_t p = same.offset(i);
     for (Index j : same.of(i)) {
       const std::size_t jj = static_cast<std::size_t>(j);
-      const double vbar = (m / rho[i]) * (m / rho[jj]);
+      const double vbar = volumeOf[i] * volumeOf[jj];
       const double kappa = kViscosityFactor * mu * vbar / ((x[i] - x[jj]).squaredNorm() + regulariser);
       member.pairCoefficient[p] = byObject && object[i] != object[jj] ? 0.0 : kappa * sameFactors[p];
       ++p;
