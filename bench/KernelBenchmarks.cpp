@@ -305,7 +305,8 @@ struct RotationCalls {
 void BM_RotationExtraction(benchmark::State& state) {
   const RotationCalls calls;
   for (auto _ : state)
-    for (std::size_t p = 0; p < calls.f.size(); ++p) benchmark::DoNotOptimize(extractRotation(calls.f[p], calls.previous[p]));
+    for (std::size_t p = 0; p < calls.f.size(); ++p)
+      benchmark::DoNotOptimize(extractRotation(calls.f[p], calls.previous[p]));
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(calls.f.size()));
 }
 

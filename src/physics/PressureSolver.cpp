@@ -12,7 +12,7 @@
 namespace poro {
 
 namespace {
-const char* const kResidual = "pressureResidual"; ///< max(-r_a, 0): the compression left after the sweep's pressure
+const char* const kResidual = "pressureResidual";  ///< max(-r_a, 0): the compression left after the sweep's pressure
 const char* const kPreviousPi = "piPreviousSweep"; ///< pi of the sweep before, for the Chebyshev extrapolation
 
 /// The first sweep Chebyshev extrapolates. The sweeps before it are plain relaxed Jacobi, so a step that converges

@@ -18,7 +18,7 @@ struct PressureSettings {
   /// acceleration: chebyshev (true) | none (false, the relaxed Jacobi of METHOD.md §6.7 alone). Default chebyshev;
   /// none when compatibility names preset reference. The key, when given, always wins.
   bool chebyshev = true;
-  double spectralRadius = 0.9;  ///< Chebyshev's estimate of the sweeps' convergence factor, (0, 1)
+  double spectralRadius = 0.9; ///< Chebyshev's estimate of the sweeps' convergence factor, (0, 1)
   /// poreFluidDensity: paper (false, Eq. 4 as it stands) | latticeCorrected (true, PoreFluidDensityBias.hpp).
   /// Default latticeCorrected, so pores hold phi V; paper when system/solverDict names a compatibility preset.
   bool latticeCorrectedPoreFluid = true;

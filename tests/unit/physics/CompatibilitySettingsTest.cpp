@@ -127,8 +127,9 @@ TEST(PressureAcceleration, ChebyshevByDefaultAndInPaperModeJacobiAloneUnderTheRe
 }
 
 TEST(PressureAcceleration, BadValuesAreInputErrorsWithFileAndLine) {
-  for (const char* text : {"threads: 0\npressure: {acceleration: conjugateGradients}\n",
-                           "threads: 0\npressure: {spectralRadius: 1}\n", "threads: 0\npressure: {spectralRadius: 0}\n"}) {
+  for (const char* text :
+       {"threads: 0\npressure: {acceleration: conjugateGradients}\n", "threads: 0\npressure: {spectralRadius: 1}\n",
+        "threads: 0\npressure: {spectralRadius: 0}\n"}) {
     try {
       pressure(text);
       ADD_FAILURE() << "no InputError for " << text;
