@@ -32,7 +32,10 @@ protected:
     runner_ = new CaseRunner("fluid/hydrostaticTank", "HydrostaticTank");
     runner_->setKey("constant/fluidProperties", "viscosity", "5");
     runner_->setKey("system/solverDict", "xsph", "0");
-    runner_->setKey("system/solverDict", "  maxDensityError", "0.01"); // the default, which the checks below state
+    // The default solve, which the checks below state: 0.01 %, Chebyshev at 0.9. The tutorial's 0.98 suits its
+    // 0.001 %; at 0.01 % it leaves the layer below the surface at twice rho0 g d (measured: worst layer 1.0 off).
+    runner_->setKey("system/solverDict", "  maxDensityError", "0.01");
+    runner_->setKey("system/solverDict", "  spectralRadius", "0.9");
     runner_->setKey("system/controlDict", "endTime", "1.5");
     runner_->setKey("system/controlDict", "writeInterval", "0.02"); // 25 snapshots over the last 0.5 s
     ASSERT_EQ(runner_->sample(), 0) << runner_->read("log.sampleParticles");
