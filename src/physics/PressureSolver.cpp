@@ -169,10 +169,18 @@ void PressureSolver::computeAccelerations(const StepContext& ctx, const std::vec
         const auto& xb = *p.x;
         const auto& s = *p.factors;
         std::size_t pair = p.list->offset(i);
-        for (Index jIndex : p.list->of(i)) {
-          const std::size_t j = static_cast<std::size_t>(jIndex);
-          const double h = p.coupling.couplingOf(object[i] == p.objectB[j]);
-          sum += (h * piB[j] * s[pair++]) * (x[i] - xb[j]);
+        if (p.coupling.byObject) {
+          for (Index jIndex : p.list->of(i)) {
+            const std::size_t j = static_cast<std::size_t>(jIndex);
+            const double h = p.coupling.couplingOf(object[i] == p.objectB[j]);
+            sum += (h * piB[j] * s[pair++]) * (x[i] - xb[j]);
+          }
+        } else { // one h for every pair: no object ids to load
+          const double h = p.coupling.coupling;
+          for (Index jIndex : p.list->of(i)) {
+            const std::size_t j = static_cast<std::size_t>(jIndex);
+            sum += (h * piB[j] * s[pair++]) * (x[i] - xb[j]);
+          }
         }
       }
       accel[i] = -pi[i] * gradSum[i] - volume * sum;
