@@ -62,15 +62,13 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
     shepard_[s] = shepard;
     volume_[s] = 1.0 / shepard;
   });
-  parallel::forEach(n, [&](std::size_t s) {
-    for (std::size_t pair = begin(s); pair < end(s); ++pair)
-      weightedGradients_[pair] *= volume_[static_cast<std::size_t>(neighbours_[pair])];
-  });
+  // Every V0 is known now: weight the gradients by their neighbour's volume and sum the moments.
   parallel::forEach(n, [&](std::size_t s) {
     Mat3 moment = Mat3::Zero();
     Vec3 sum = Vec3::Zero();
     for (std::size_t pair = begin(s); pair < end(s); ++pair) {
       const std::size_t t = static_cast<std::size_t>(neighbours_[pair]);
+      weightedGradients_[pair] *= volume_[t];
       moment += weightedGradients_[pair] * (rest[t] - rest[s]).transpose();
       sum += weightedGradients_[pair];
     }
