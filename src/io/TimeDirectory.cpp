@@ -306,6 +306,14 @@ bool isStalePvdTemporary(const std::string& entry) {
 
 } // namespace
 
+std::vector<std::string> particleSetOrder(const std::vector<PorousMaterial>& materials) {
+  std::vector<std::string> names{"fluid"};
+  for (const PorousMaterial& m : materials) names.push_back(m.name);
+  names.push_back("boundary");
+  names.push_back(kRigidSetName);
+  return names;
+}
+
 std::string timeName(double time) {
   char buffer[40];
   for (int precision = 6; precision <= 17; ++precision) {
@@ -424,8 +432,7 @@ TimeWriter::TimeWriter(fs::path caseDir, const OutputSettings& settings, const s
   recoverInterruptedWrites(caseDir_);
   // The record of what the particles were sampled from goes with them into every time directory (a restart from
   // any of them is checked, io/SamplingRecord.hpp); copied as it is.
-  if (std::ifstream record{caseDir_ / startName / "uniform" / kSamplingRecordName})
-    samplingRecord_.assign(std::istreambuf_iterator<char>(record), std::istreambuf_iterator<char>());
+  samplingRecord_ = readSamplingRecordText(caseDir_ / startName);
   for (const auto& entry : fs::directory_iterator(caseDir_ / startName))
     if (isParticleFile(entry.path()))
       series_.add(start, entry.path().stem().string(), startName + "/" + entry.path().filename().string());
@@ -493,15 +500,29 @@ void TimeWriter::purge() {
   }
 }
 
-void TimeWriter::writeAll(const fs::path& caseDir, const ParticleSystem& particles, const RunState& state, bool binary,
-                          const std::string& samplingRecord) {
-  const std::string name = timeName(state.time);
+std::vector<std::string> writeTimeDirectory(const fs::path& caseDir, const ParticleSystem& particles,
+                                            const RunState& state, bool binary, const std::string& samplingRecord,
+                                            bool withBoundaries) {
   std::vector<std::string> parts;
-  writeDirectoryAtomically(caseDir, name, [&](const fs::path& dir) {
-    parts = writeSets(dir, particles, true, binary);
+  writeDirectoryAtomically(caseDir, timeName(state.time), [&](const fs::path& dir) {
+    parts = writeSets(dir, particles, withBoundaries, binary);
     writeRunState(dir, state, particles.particleRadius());
     writeSamplingRecord(dir, samplingRecord);
   });
+  return parts;
+}
+
+std::string readSamplingRecordText(const fs::path& timeDir) {
+  std::string text;
+  if (std::ifstream record{timeDir / "uniform" / kSamplingRecordName})
+    text.assign(std::istreambuf_iterator<char>(record), std::istreambuf_iterator<char>());
+  return text;
+}
+
+void TimeWriter::writeAll(const fs::path& caseDir, const ParticleSystem& particles, const RunState& state, bool binary,
+                          const std::string& samplingRecord) {
+  const std::vector<std::string> parts = writeTimeDirectory(caseDir, particles, state, binary, samplingRecord, true);
+  const std::string name = timeName(state.time);
   PvdSeries series;
   for (const std::string& part : parts) series.add(state.time, part, name + "/" + part + ".vtp");
   series.write(caseDir / kPvdName);

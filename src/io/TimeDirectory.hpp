@@ -24,6 +24,10 @@ inline constexpr const char* kRigidSetName = "rigid";
 inline constexpr const char* kFluidSurfaceFile = "fluidSurface.vtp";
 inline constexpr const char* kPorousSurfaceFile = "porousSurface.vtp";
 
+/// The names of a case's particle sets in ParticleSystem order (METHOD.md §1): fluid, the porous materials in
+/// constant/porosityProperties order, the walls ("boundary") and the rigid bodies.
+std::vector<std::string> particleSetOrder(const std::vector<PorousMaterial>& materials);
+
 /// The directory name of a time value: shortest decimal that reads back within 1e-10 relative ("0.1", "2.5").
 std::string timeName(double time);
 
@@ -59,6 +63,16 @@ PvdSeries seriesOfTimeDirectories(const std::filesystem::path& caseDir);
 /// `.case.pvd.tmp.<pid>` of processes that no longer run, and puts back `.<t>.old` (a time directory being
 /// replaced) where `<t>` is missing or incomplete. poroSph does this before it looks for its start time.
 void recoverInterruptedWrites(const std::filesystem::path& caseDir);
+
+/// Writes `<caseDir>/<t>/` atomically: the particle files (static walls only `withBoundaries`, rigid.vtp always),
+/// uniform/time (and uniform/rigidBodies) and, unless `samplingRecord` is empty, uniform/sampling. case.pvd is left
+/// as it is. Returns the part names of the files written (case.pvd's "fluid", "porous", ...), in ParticleSystem order.
+std::vector<std::string> writeTimeDirectory(const std::filesystem::path& caseDir, const ParticleSystem& particles,
+                                            const RunState& state, bool binary, const std::string& samplingRecord,
+                                            bool withBoundaries);
+
+/// The text of `<timeDir>/uniform/sampling` as it is (io/SamplingRecord.hpp), "" when the directory has none.
+std::string readSamplingRecordText(const std::filesystem::path& timeDir);
 
 /// Writes the solver's state as a time directory and keeps case.pvd in step.
 class TimeWriter {

@@ -18,6 +18,8 @@ struct ParticleSet::FieldBase {
   virtual ~FieldBase() = default;
   virtual void resize(std::size_t n) = 0;
   virtual void permute(const std::vector<Index>& order) = 0;
+  virtual std::unique_ptr<FieldBase> gathered(const std::vector<Index>& slots) const = 0;
+  virtual void append(const FieldBase& other) = 0;
 };
 
 template <class T>
@@ -28,6 +30,17 @@ struct ParticleSet::Field final : FieldBase {
     std::vector<T> sorted(order.size());
     for (std::size_t i = 0; i < order.size(); ++i) sorted[i] = data[static_cast<std::size_t>(order[i])];
     data.swap(sorted);
+  }
+  std::unique_ptr<FieldBase> gathered(const std::vector<Index>& slots) const override {
+    auto copy = std::make_unique<Field<T>>();
+    copy->info = info;
+    copy->data.reserve(slots.size());
+    for (Index i : slots) copy->data.push_back(data[static_cast<std::size_t>(i)]);
+    return copy;
+  }
+  void append(const FieldBase& other) override {
+    const auto& from = static_cast<const Field<T>&>(other).data;
+    data.insert(data.end(), from.begin(), from.end());
   }
 };
 
@@ -134,6 +147,35 @@ void ParticleSet::remove(const std::vector<std::size_t>& indices) {
   if (next != indices.size()) throw std::logic_error("ParticleSet::remove: indices not ascending or out of range");
   for (auto& f : fields_) f->permute(kept); // a gather into kept.size() slots
   size_ = kept.size();
+}
+
+ParticleSet ParticleSet::select(const std::vector<Index>& slots) const {
+  for (Index i : slots)
+    if (i < 0 || static_cast<std::size_t>(i) >= size_) throw std::logic_error("ParticleSet::select: slot out of range");
+  ParticleSet result(name_, kind_);
+  result.fields_.clear();
+  for (const auto& f : fields_) result.fields_.push_back(f->gathered(slots));
+  result.size_ = slots.size();
+  result.x_ = &result.get<Vec3>(field::x, FieldType::Vec3);
+  result.v_ = &result.get<Vec3>(field::v, FieldType::Vec3);
+  result.particleVolume = particleVolume;
+  result.mass = mass;
+  result.restDensity = restDensity;
+  result.source = source;
+  return result;
+}
+
+void ParticleSet::append(const ParticleSet& other) {
+  if (other.fields_.size() != fields_.size())
+    throw std::logic_error("ParticleSet::append: sets '" + name_ + "' and '" + other.name_ + "' have other fields");
+  for (auto& f : fields_) {
+    const FieldBase* from = other.find(f->info.name);
+    if (!from || from->info.type != f->info.type)
+      throw std::logic_error("ParticleSet::append: set '" + other.name_ + "' has no field '" + f->info.name +
+                             "' of the same type");
+  }
+  for (auto& f : fields_) f->append(*other.find(f->info.name));
+  size_ += other.size_;
 }
 
 } // namespace poro

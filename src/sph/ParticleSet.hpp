@@ -75,6 +75,11 @@ public:
   void permute(const std::vector<Index>& order);
   /// Deletes the particles at `indices` (ascending, distinct) from every field; the others keep their order.
   void remove(const std::vector<std::size_t>& indices);
+  /// A new set of the same name, kind, constants and fields (roles included) holding the particles at `slots`, in
+  /// that order (a subdomain's share of a set, parallel/Decomposition.hpp).
+  ParticleSet select(const std::vector<Index>& slots) const;
+  /// Appends every particle of `other`, which must have the same fields (names and types; order may differ).
+  void append(const ParticleSet& other);
 
   /// Shorthands for the position and velocity fields every set has.
   std::vector<Vec3>& x() { return *x_; }

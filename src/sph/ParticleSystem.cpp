@@ -10,6 +10,12 @@ ParticleSet& ParticleSystem::add(const std::string& name, SetKind kind) {
   return *sets_.back();
 }
 
+ParticleSet& ParticleSystem::add(ParticleSet&& set) {
+  if (find(set.name())) throw std::logic_error("particle set '" + set.name() + "' added twice");
+  sets_.push_back(std::make_unique<ParticleSet>(std::move(set)));
+  return *sets_.back();
+}
+
 ParticleSet* ParticleSystem::find(const std::string& name) {
   for (auto& s : sets_)
     if (s->name() == name) return s.get();

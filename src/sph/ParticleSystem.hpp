@@ -22,6 +22,8 @@ public:
 
   /// Adds a set and returns it; names are unique ("fluid", "boundary", material names).
   ParticleSet& add(const std::string& name, SetKind kind);
+  /// Adds a set made elsewhere (ParticleSet::select) and returns it; its name must be new.
+  ParticleSet& add(ParticleSet&& set);
   std::size_t size() const { return sets_.size(); }
   ParticleSet& operator[](std::size_t i) { return *sets_[i]; }
   const ParticleSet& operator[](std::size_t i) const { return *sets_[i]; }

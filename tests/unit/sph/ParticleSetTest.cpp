@@ -1,4 +1,5 @@
-// ParticleSet: removing particles takes them out of every field and keeps the others in order.
+// ParticleSet: removing particles takes them out of every field and keeps the others in order; selecting and
+// appending (a subdomain's share and the merge back) carry every field, role and constant.
 
 #include "sph/ParticleSet.hpp"
 
@@ -33,6 +34,54 @@ TEST(ParticleSet, RemoveDeletesFromEveryFieldKeepingOrder) {
   EXPECT_EQ(set.size(), 3u);
   EXPECT_THROW(set.remove({1, 0}), std::logic_error);
   EXPECT_THROW(set.remove({7}), std::logic_error);
+}
+
+TEST(ParticleSet, SelectAndAppendCarryEveryFieldRoleAndConstant) {
+  ParticleSet set("sand", SetKind::Porous);
+  auto& rest = set.addVec3("restPosition", Restart);
+  auto& rotation = set.addMat3("rotation", Restart);
+  auto& scratch = set.addReal("scratch");
+  set.resize(5);
+  set.particleVolume = 8e-6;
+  set.mass = 0.004;
+  set.restDensity = 1500.0;
+  set.source = "0/porous.vtp";
+  for (std::size_t i = 0; i < 5; ++i) {
+    set.integer(field::id)[i] = static_cast<std::int64_t>(i);
+    set.x()[i] = Vec3(1.0, 2.0, static_cast<double>(i));
+    set.v()[i] = Vec3::Constant(-static_cast<double>(i));
+    rest[i] = Vec3::Constant(0.5 * static_cast<double>(i));
+    rotation[i] = Mat3::Identity() * static_cast<double>(i);
+    scratch[i] = 3.0 * static_cast<double>(i);
+  }
+  ParticleSet piece = set.select({4, 1});
+  EXPECT_EQ(piece.name(), "sand");
+  EXPECT_EQ(piece.kind(), SetKind::Porous);
+  EXPECT_EQ(piece.particleVolume, 8e-6);
+  EXPECT_EQ(piece.mass, 0.004);
+  EXPECT_EQ(piece.restDensity, 1500.0);
+  EXPECT_EQ(piece.source, "0/porous.vtp");
+  ASSERT_EQ(piece.size(), 2u);
+  ASSERT_EQ(piece.fields().size(), set.fields().size());
+  EXPECT_EQ(piece.info("rotation")->role, Restart);
+  EXPECT_EQ(piece.info("scratch")->role, Scratch);
+  EXPECT_EQ(piece.integer(field::id), (std::vector<std::int64_t>{4, 1}));
+  EXPECT_EQ(piece.x()[0], set.x()[4]); // the shorthands point at the piece's own fields
+  EXPECT_EQ(piece.v()[1], set.v()[1]);
+  EXPECT_EQ(piece.mat3("rotation")[0], rotation[4]);
+  EXPECT_EQ(piece.real("scratch")[1], scratch[1]);
+
+  ParticleSet rest3 = set.select({0, 2, 3});
+  piece.append(rest3);
+  ASSERT_EQ(piece.size(), 5u);
+  EXPECT_EQ(piece.integer(field::id), (std::vector<std::int64_t>{4, 1, 0, 2, 3}));
+  EXPECT_EQ(piece.vec3("restPosition")[4], rest[3]);
+  EXPECT_EQ(piece.x().size(), 5u);
+
+  ParticleSet other("sand", SetKind::Porous);
+  other.resize(1);
+  EXPECT_THROW(piece.append(other), std::logic_error); // other fields
+  EXPECT_THROW(set.select({5}), std::logic_error);
 }
 
 } // namespace

@@ -1,0 +1,137 @@
+// Partitions (parallel/Partition.hpp): the Hilbert index is a face-connected bijection; both methods give every part
+// its share of the weight within what whole particles allow, bisection gives disjoint boxes, and the result is
+// deterministic.
+
+#include "parallel/Partition.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
+
+namespace poro {
+namespace {
+
+TEST(HilbertIndex, VisitsEveryCellOnceMovingOneFaceAtATime) {
+  for (int bits = 1; bits <= 4; ++bits) {
+    const std::uint32_t side = 1u << bits;
+    std::vector<std::array<std::uint32_t, 3>> cellAt(static_cast<std::size_t>(side) * side * side, {side, side, side});
+    for (std::uint32_t i = 0; i < side; ++i)
+      for (std::uint32_t j = 0; j < side; ++j)
+        for (std::uint32_t k = 0; k < side; ++k) {
+          const std::uint64_t h = hilbertIndex(i, j, k, bits);
+          ASSERT_LT(h, cellAt.size());
+          ASSERT_EQ(cellAt[h][0], side) << "index " << h << " given twice at order " << bits;
+          cellAt[h] = {i, j, k};
+        }
+    for (std::size_t h = 1; h < cellAt.size(); ++h) {
+      int steps = 0;
+      for (int a = 0; a < 3; ++a)
+        steps += std::abs(static_cast<int>(cellAt[h][a]) - static_cast<int>(cellAt[h - 1][a]));
+      EXPECT_EQ(steps, 1) << "indices " << h - 1 << " and " << h << " at order " << bits;
+    }
+  }
+}
+
+struct Cloud {
+  std::vector<Vec3> points;
+  std::vector<double> weights;
+};
+
+Cloud randomCloud(std::size_t n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> x(0.0, 2.0), y(0.0, 1.0), z(0.0, 0.5), w(0.25, 2.0);
+  Cloud c;
+  for (std::size_t i = 0; i < n; ++i) {
+    c.points.emplace_back(x(rng), y(rng), z(rng));
+    c.weights.push_back(w(rng));
+  }
+  return c;
+}
+
+std::vector<double> partWeights(const Cloud& c, const std::vector<int>& owner, int parts) {
+  std::vector<double> w(static_cast<std::size_t>(parts), 0.0);
+  for (std::size_t i = 0; i < owner.size(); ++i) {
+    EXPECT_GE(owner[i], 0);
+    EXPECT_LT(owner[i], parts);
+    w[static_cast<std::size_t>(owner[i])] += c.weights[i];
+  }
+  return w;
+}
+
+TEST(Partition, BisectionBalancesWithinWholeParticlesAndCutsDisjointBoxes) {
+  const Cloud c = randomCloud(5000, 7);
+  const double total = std::accumulate(c.weights.begin(), c.weights.end(), 0.0);
+  for (int parts = 1; parts <= 9; ++parts) {
+    const std::vector<int> owner = partitionPoints(c.points, c.weights, parts, PartitionMethod::RecursiveBisection, 0.1);
+    // Each cut misses its share by at most half the heaviest particle (2.0), and a part lies below at most
+    // ceil(log2 parts) cuts, each scaling the misses above it by at most 1.
+    const double levels = std::ceil(std::log2(static_cast<double>(parts)));
+    const std::vector<double> w = partWeights(c, owner, parts);
+    for (int p = 0; p < parts; ++p)
+      EXPECT_NEAR(w[static_cast<std::size_t>(p)], total / parts, 1.0 * levels + 1e-9) << parts << " parts, part " << p;
+    // Axis-aligned cuts: the bounding boxes of two parts are separated along some axis.
+    std::vector<Vec3> lo(static_cast<std::size_t>(parts), Vec3::Constant(INFINITY));
+    std::vector<Vec3> hi(static_cast<std::size_t>(parts), Vec3::Constant(-INFINITY));
+    for (std::size_t i = 0; i < owner.size(); ++i) {
+      lo[static_cast<std::size_t>(owner[i])] = lo[static_cast<std::size_t>(owner[i])].cwiseMin(c.points[i]);
+      hi[static_cast<std::size_t>(owner[i])] = hi[static_cast<std::size_t>(owner[i])].cwiseMax(c.points[i]);
+    }
+    for (std::size_t p = 0; p < lo.size(); ++p)
+      for (std::size_t q = p + 1; q < lo.size(); ++q) {
+        bool separated = false;
+        for (int a = 0; a < 3; ++a) separated = separated || hi[p][a] < lo[q][a] || hi[q][a] < lo[p][a];
+        EXPECT_TRUE(separated) << parts << " parts: parts " << p << " and " << q << " overlap";
+      }
+  }
+}
+
+TEST(Partition, HilbertCurveBalancesWithinWholeParticles) {
+  const Cloud c = randomCloud(5000, 11);
+  const double total = std::accumulate(c.weights.begin(), c.weights.end(), 0.0);
+  for (int parts = 1; parts <= 9; ++parts) {
+    const std::vector<int> owner = partitionPoints(c.points, c.weights, parts, PartitionMethod::HilbertCurve, 0.1);
+    // Cut p takes 1/(parts - p) of what is left to within half a particle (1.0); the misses of earlier cuts spread
+    // over the later parts, which adds at most 1.0 (1/(n-1) + 1/(n-2) + ... + 1).
+    double harmonic = 0.0;
+    for (int k = 1; k < parts; ++k) harmonic += 1.0 / k;
+    const std::vector<double> w = partWeights(c, owner, parts);
+    for (int p = 0; p < parts; ++p)
+      EXPECT_NEAR(w[static_cast<std::size_t>(p)], total / parts, 1.0 * (1.0 + harmonic) + 1e-9)
+          << parts << " parts, part " << p;
+  }
+}
+
+TEST(Partition, IsDeterministicAndFillsEveryPartWhenItCan) {
+  const Cloud c = randomCloud(40, 3);
+  for (const PartitionMethod method : {PartitionMethod::RecursiveBisection, PartitionMethod::HilbertCurve}) {
+    const auto a = partitionPoints(c.points, c.weights, 40, method, 0.1);
+    EXPECT_EQ(a, partitionPoints(c.points, c.weights, 40, method, 0.1));
+    EXPECT_EQ(std::set<int>(a.begin(), a.end()).size(), 40u) << toString(method); // one point each
+    const auto fewer = partitionPoints(c.points, c.weights, 50, method, 0.1);
+    EXPECT_EQ(std::set<int>(fewer.begin(), fewer.end()).size(), 40u) << toString(method);
+    EXPECT_TRUE(partitionPoints({}, {}, 4, method, 0.1).empty());
+  }
+  EXPECT_THROW(partitionPoints(c.points, {}, 2, PartitionMethod::HilbertCurve, 0.1), std::logic_error);
+}
+
+TEST(Partition, HilbertCurveKeepsPartsCompact) {
+  // A 16^3 lattice in 8 parts: a Hilbert curve of order 4 visits the octants one after another, so each part is
+  // exactly one 8^3 octant.
+  std::vector<Vec3> points;
+  for (int i = 0; i < 16; ++i)
+    for (int j = 0; j < 16; ++j)
+      for (int k = 0; k < 16; ++k) points.emplace_back(i + 0.5, j + 0.5, k + 0.5);
+  const std::vector<double> weights(points.size(), 1.0);
+  const auto owner = partitionPoints(points, weights, 8, PartitionMethod::HilbertCurve, 1.0);
+  std::vector<std::set<int>> octants(8);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    octants[static_cast<std::size_t>(owner[i])].insert((points[i].x() > 8) + 2 * (points[i].y() > 8) +
+                                                       4 * (points[i].z() > 8));
+  for (int p = 0; p < 8; ++p) EXPECT_EQ(octants[static_cast<std::size_t>(p)].size(), 1u) << "part " << p;
+}
+
+} // namespace
+} // namespace poro
