@@ -1,6 +1,7 @@
 #include "analysis/SaturationAnalysis.hpp"
 
 #include "analysis/AbsorbedFluid.hpp"
+#include "io/ProcessorDirectories.hpp"
 #include "io/TimeDirectory.hpp"
 
 #include <map>
@@ -37,8 +38,17 @@ TimeRecord analyse(const ParticleSystem& particles, const AnalysisSettings& sett
 
 TimeRecord analyseTimeDirectory(const std::filesystem::path& caseDir, const std::string& name,
                                 const AnalysisSettings& settings) {
-  const RunState state = readRunState(caseDir / name);
-  TimeRecord record = analyse(readParticles(caseDir, name, settings.particleRadius, settings.materials), settings);
+  // A time a decomposed run wrote only into processor<N>/ is read from its subdomains, merged.
+  const std::vector<std::filesystem::path> processors =
+      std::filesystem::exists(caseDir / name / "uniform" / "time") ? std::vector<std::filesystem::path>()
+                                                                   : listProcessorDirectories(caseDir);
+  const RunState state =
+      processors.empty() ? readRunState(caseDir / name) : readDecomposedRunState(processors, name);
+  TimeRecord record =
+      analyse(processors.empty()
+                  ? readParticles(caseDir, name, settings.particleRadius, settings.materials)
+                  : readDecomposedParticles(processors, name, settings.particleRadius, settings.materials),
+              settings);
   record.name = name;
   record.time = state.time;
   record.step = state.step;

@@ -2,6 +2,7 @@
 
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "io/ProcessorDirectories.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -180,6 +181,27 @@ TimeSelection selectTimes(const Arguments& args, const fs::path& caseDir) {
   std::optional<TimeSelector> selector;
   if (args.has("time")) selector = TimeSelector::parse(args.value("time"));
   TimeSelection selection = selectTimes(scanTimeDirectories(caseDir), selector, args.has("latestTime"), caseDir);
+  for (const std::string& warning : selection.warnings) log::warning(warning);
+  return selection;
+}
+
+TimeSelection selectTimesWithSubdomains(const Arguments& args, const fs::path& caseDir) {
+  std::optional<TimeSelector> selector;
+  if (args.has("time")) selector = TimeSelector::parse(args.value("time"));
+  std::vector<TimeCandidate> candidates = scanTimeDirectories(caseDir);
+  const std::vector<fs::path> processors = listProcessorDirectories(caseDir);
+  if (!processors.empty()) {
+    for (const TimeCandidate& t : scanTimeDirectories(processors.front())) {
+      const bool own = std::any_of(candidates.begin(), candidates.end(), [&](const TimeCandidate& c) {
+        return c.name == t.name && c.state == TimeCandidate::State::Complete;
+      });
+      if (!own && t.state == TimeCandidate::State::Complete) candidates.push_back(t);
+    }
+    std::sort(candidates.begin(), candidates.end(), [](const TimeCandidate& a, const TimeCandidate& b) {
+      return a.time != b.time ? a.time < b.time : a.state < b.state;
+    });
+  }
+  TimeSelection selection = selectTimes(candidates, selector, args.has("latestTime"), caseDir);
   for (const std::string& warning : selection.warnings) log::warning(warning);
   return selection;
 }

@@ -61,6 +61,9 @@ TimeSelection selectTimes(const std::vector<TimeCandidate>& candidates, const st
 std::vector<Arguments::Option> timeOptions(const std::string& verb);
 /// selectTimes for a utility's -time and -latestTime (timeOptions), its warnings logged.
 TimeSelection selectTimes(const Arguments& args, const std::filesystem::path& caseDir);
+/// selectTimes over the times of a case that may be decomposed: its own time directories and, where it has none of
+/// that time, processor0's (io/ProcessorDirectories.hpp), so a utility that reads both sees every time once.
+TimeSelection selectTimesWithSubdomains(const Arguments& args, const std::filesystem::path& caseDir);
 /// The InputError of a utility that could read none of the `selected` time directories (each named in a warning).
 InputError noneReadable(const std::filesystem::path& caseDir, std::size_t selected);
 

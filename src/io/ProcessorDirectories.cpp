@@ -1,6 +1,8 @@
 #include "io/ProcessorDirectories.hpp"
 
 #include "core/Error.hpp"
+#include "io/TimeDirectory.hpp"
+#include "parallel/Decomposition.hpp"
 
 #include <set>
 
@@ -31,6 +33,44 @@ std::vector<fs::path> listProcessorDirectories(const fs::path& caseDir) {
     result.push_back(processorDirectory(caseDir, rank));
   }
   return result;
+}
+
+namespace {
+
+void requireTimeInEvery(const std::vector<fs::path>& processors, const std::string& time) {
+  for (const fs::path& p : processors)
+    if (!fs::exists(p / time / "uniform" / "time"))
+      throw InputError((p / time).string() + ": missing or incomplete, but " + (processors.front() / time).string() +
+                       " exists; every subdomain needs each time");
+}
+
+} // namespace
+
+ParticleSystem readDecomposedParticles(const std::vector<fs::path>& processors, const std::string& time,
+                                       double particleRadius, const std::vector<PorousMaterial>& materials) {
+  requireTimeInEvery(processors, time);
+  std::vector<ParticleSystem> pieces;
+  std::vector<std::string> names;
+  for (const fs::path& p : processors) {
+    pieces.push_back(readParticles(p, time, particleRadius, materials));
+    names.push_back((p / time).string());
+  }
+  return mergePieces(std::move(pieces), names, particleSetOrder(materials));
+}
+
+RunState readDecomposedRunState(const std::vector<fs::path>& processors, const std::string& time) {
+  requireTimeInEvery(processors, time);
+  const RunState state = readRunState(processors.front() / time);
+  for (std::size_t p = 1; p < processors.size(); ++p) {
+    const RunState other = readRunState(processors[p] / time);
+    if (other.time != state.time || other.step != state.step || other.nextDeltaT != state.nextDeltaT ||
+        other.rigidBodies.size() != state.rigidBodies.size())
+      throw InputError((processors[p] / time / "uniform" / "time").string() + ": step " +
+                       std::to_string(other.step) + ", but " + (processors.front() / time).string() +
+                       " is at step " + std::to_string(state.step) +
+                       "; the subdomains of one time must come from one run");
+  }
+  return state;
 }
 
 } // namespace poro

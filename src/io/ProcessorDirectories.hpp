@@ -3,6 +3,10 @@
 /// out like a case's time directories (`processor<N>/<t>/fluid.vtp`, ...), written by decomposePar and a parallel run
 /// and merged back by reconstructPar.
 
+#include "physics/PorousMaterial.hpp"
+#include "physics/RunState.hpp"
+#include "sph/ParticleSystem.hpp"
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -15,5 +19,14 @@ std::filesystem::path processorDirectory(const std::filesystem::path& caseDir, i
 /// The processor directories of a case, in rank order; empty when it is not decomposed. A gap in the numbering
 /// (processor0 and processor2 without processor1) is an InputError naming the missing one.
 std::vector<std::filesystem::path> listProcessorDirectories(const std::filesystem::path& caseDir);
+
+/// Time `time` of a decomposed case as one system (parallel/Decomposition.hpp mergePieces): every subdomain's
+/// particles, each set sorted by id. A subdomain without the time (or with it incomplete), pieces of different runs
+/// or radii and a particle in two subdomains are InputErrors that name the directory.
+ParticleSystem readDecomposedParticles(const std::vector<std::filesystem::path>& processors, const std::string& time,
+                                       double particleRadius, const std::vector<PorousMaterial>& materials);
+
+/// uniform/time (and uniform/rigidBodies) of time `time`, which every subdomain must agree on.
+RunState readDecomposedRunState(const std::vector<std::filesystem::path>& processors, const std::string& time);
 
 } // namespace poro

@@ -10,7 +10,6 @@
 #include "io/ProcessorDirectories.hpp"
 #include "io/PvdSeries.hpp"
 #include "io/TimeDirectory.hpp"
-#include "parallel/Decomposition.hpp"
 
 #include <iostream>
 
@@ -26,20 +25,6 @@ own, uniform/time, uniform/sampling), with the particles of every set in the ord
 existing <t>/ atomically. case.pvd is then rewritten from the case's time directories. poroSph continues a run from
 a reconstructed time like from any other.
 )";
-
-/// The run state of one time, which every subdomain must agree on.
-RunState agreedRunState(const std::vector<fs::path>& processors, const std::string& time) {
-  const RunState state = readRunState(processors.front() / time);
-  for (std::size_t p = 1; p < processors.size(); ++p) {
-    const RunState other = readRunState(processors[p] / time);
-    if (other.time != state.time || other.step != state.step || other.nextDeltaT != state.nextDeltaT ||
-        other.rigidBodies.size() != state.rigidBodies.size())
-      throw InputError((processors[p] / time / "uniform" / "time").string() + ": step " +
-                       std::to_string(other.step) + ", but " + (processors.front() / time).string() + " is at step " +
-                       std::to_string(state.step) + "; the subdomains of one time must come from one run");
-  }
-  return state;
-}
 
 bool ownBoundaries(const std::vector<fs::path>& processors, const std::string& time) {
   for (const fs::path& p : processors)
@@ -76,18 +61,8 @@ int main(int argc, char* argv[]) try {
   std::size_t written = 0;
   for (const TimeCandidate& time : selection.complete) {
     if (args.has("newTimes") && fs::exists(caseDir / time.name / "uniform" / "time")) continue;
-    for (const fs::path& p : processors)
-      if (!fs::exists(p / time.name / "uniform" / "time"))
-        throw InputError((p / time.name).string() + ": missing or incomplete, but " +
-                         (processors.front() / time.name).string() + " exists; every subdomain needs each time");
-    const RunState state = agreedRunState(processors, time.name);
-    std::vector<ParticleSystem> pieces;
-    std::vector<std::string> names;
-    for (const fs::path& p : processors) {
-      pieces.push_back(readParticles(p, time.name, radius, materials));
-      names.push_back((p / time.name).string());
-    }
-    const ParticleSystem merged = mergePieces(std::move(pieces), names, particleSetOrder(materials));
+    const RunState state = readDecomposedRunState(processors, time.name);
+    const ParticleSystem merged = readDecomposedParticles(processors, time.name, radius, materials);
     writeTimeDirectory(caseDir, merged, state, output.binary, readSamplingRecordText(processors.front() / time.name),
                        ownBoundaries(processors, time.name));
     log::info("Time " + time.name + ": " + std::to_string(merged.particleCount()) + " particles");

@@ -115,7 +115,7 @@ int main(int argc, char* argv[]) try {
   AnalysisSettings settings = readAnalysisSettings(caseDir);
   if (args.has("axis")) settings.axis = Axis::parse(args.value("axis"));
   settings.wetThreshold = wetThreshold(args);
-  const TimeSelection selection = selectTimes(args, caseDir);
+  const TimeSelection selection = selectTimesWithSubdomains(args, caseDir);
   std::ostringstream banner;
   banner << "Case: " << caseDir.string() << "\nAxis: " << settings.axis.name() << ", wet threshold "
          << settings.wetThreshold << "\nTimes: " << selection.complete.size();
