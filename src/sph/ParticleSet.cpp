@@ -1,5 +1,7 @@
 #include "sph/ParticleSet.hpp"
 
+#include <cstring>
+#include <type_traits>
 #include <stdexcept>
 
 namespace poro {
@@ -20,7 +22,24 @@ struct ParticleSet::FieldBase {
   virtual void permute(const std::vector<Index>& order) = 0;
   virtual std::unique_ptr<FieldBase> gathered(const std::vector<Index>& slots) const = 0;
   virtual void append(const FieldBase& other) = 0;
+  virtual void pack(const std::vector<Index>& slots, std::vector<char>& out) const = 0;
+  virtual std::size_t unpack(const char* in, std::size_t count, std::size_t first) = 0;
 };
+
+namespace {
+
+/// The bytes of one field value: a scalar, or an Eigen matrix's coefficients (plain doubles, packed).
+template <class T> void* bytesOf(T& value) {
+  if constexpr (std::is_arithmetic_v<T>) {
+    return &value;
+  } else {
+    static_assert(sizeof(T) == sizeof(typename T::Scalar) * T::SizeAtCompileTime, "a padded matrix type");
+    return value.data();
+  }
+}
+template <class T> const void* bytesOf(const T& value) { return bytesOf(const_cast<T&>(value)); }
+
+} // namespace
 
 template <class T>
 struct ParticleSet::Field final : FieldBase {
@@ -41,6 +60,16 @@ struct ParticleSet::Field final : FieldBase {
   void append(const FieldBase& other) override {
     const auto& from = static_cast<const Field<T>&>(other).data;
     data.insert(data.end(), from.begin(), from.end());
+  }
+  void pack(const std::vector<Index>& slots, std::vector<char>& out) const override {
+    const std::size_t at = out.size();
+    out.resize(at + slots.size() * sizeof(T));
+    for (std::size_t k = 0; k < slots.size(); ++k)
+      std::memcpy(out.data() + at + k * sizeof(T), bytesOf(data[static_cast<std::size_t>(slots[k])]), sizeof(T));
+  }
+  std::size_t unpack(const char* in, std::size_t count, std::size_t first) override {
+    for (std::size_t k = 0; k < count; ++k) std::memcpy(bytesOf(data[first + k]), in + k * sizeof(T), sizeof(T));
+    return count * sizeof(T);
   }
 };
 
@@ -176,6 +205,33 @@ void ParticleSet::append(const ParticleSet& other) {
   }
   for (auto& f : fields_) f->append(*other.find(f->info.name));
   size_ += other.size_;
+}
+
+void ParticleSet::pack(const std::vector<Index>& slots, const std::vector<std::string>& names,
+                       std::vector<char>& out) const {
+  for (const std::string& name : names.empty() ? fieldNames() : names) {
+    const FieldBase* f = find(name);
+    if (!f) throw std::logic_error("ParticleSet::pack: set '" + name_ + "' has no field '" + name + "'");
+    f->pack(slots, out);
+  }
+}
+
+std::size_t ParticleSet::unpack(const char* in, std::size_t count, std::size_t first,
+                                const std::vector<std::string>& names) {
+  if (first + count > size_) throw std::logic_error("ParticleSet::unpack: slots beyond the set's size");
+  std::size_t read = 0;
+  for (const std::string& name : names.empty() ? fieldNames() : names) {
+    FieldBase* f = find(name);
+    if (!f) throw std::logic_error("ParticleSet::unpack: set '" + name_ + "' has no field '" + name + "'");
+    read += f->unpack(in + read, count, first);
+  }
+  return read;
+}
+
+std::vector<std::string> ParticleSet::fieldNames() const {
+  std::vector<std::string> names;
+  for (const auto& f : fields_) names.push_back(f->info.name);
+  return names;
 }
 
 } // namespace poro

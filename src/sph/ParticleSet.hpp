@@ -81,6 +81,15 @@ public:
   /// Appends every particle of `other`, which must have the same fields (names and types; order may differ).
   void append(const ParticleSet& other);
 
+  /// The fields named `names` (all fields when empty) of the particles at `slots`, appended to `out` as raw bytes
+  /// in the order of `names` (ghost particles sent to another rank, parallel/HaloExchange.hpp).
+  void pack(const std::vector<Index>& slots, const std::vector<std::string>& names, std::vector<char>& out) const;
+  /// Writes `count` particles packed by pack() with the same `names` into slots first .. first + count - 1, which
+  /// must exist; returns the bytes read.
+  std::size_t unpack(const char* in, std::size_t count, std::size_t first, const std::vector<std::string>& names);
+  /// Names of every field, in registry order (the `names` of pack() for a whole particle).
+  std::vector<std::string> fieldNames() const;
+
   /// Shorthands for the position and velocity fields every set has.
   std::vector<Vec3>& x() { return *x_; }
   const std::vector<Vec3>& x() const { return *x_; }

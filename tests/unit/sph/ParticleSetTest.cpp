@@ -84,5 +84,41 @@ TEST(ParticleSet, SelectAndAppendCarryEveryFieldRoleAndConstant) {
   EXPECT_THROW(set.select({5}), std::logic_error);
 }
 
+TEST(ParticleSet, PackedFieldsUnpackBitForBitIntoOtherSlots) {
+  ParticleSet from("fluid", SetKind::Fluid);
+  auto& stress = from.addMat3("stress");
+  auto& pressure = from.addReal("pressure");
+  from.resize(4);
+  for (std::size_t i = 0; i < 4; ++i) {
+    from.integer(field::id)[i] = static_cast<std::int64_t>(100 + i);
+    from.x()[i] = Vec3(0.1 * static_cast<double>(i), 1.0 / 3.0, -2.0);
+    stress[i] = Mat3::Random();
+    pressure[i] = 1e5 / (1.0 + static_cast<double>(i));
+  }
+  std::vector<char> all, some;
+  from.pack({3, 0}, {}, all);
+  from.pack({3, 0}, {"pressure", "x"}, some);
+  EXPECT_EQ(all.size(), 2 * (2 * 8 + 2 * 24 + 72 + 8));
+  EXPECT_EQ(some.size(), 2 * (8 + 24));
+
+  ParticleSet to("fluid", SetKind::Fluid);
+  to.addMat3("stress");
+  to.addReal("pressure");
+  to.resize(3);
+  EXPECT_EQ(to.unpack(all.data(), 2, 1, {}), all.size());
+  EXPECT_EQ(to.integer(field::id), (std::vector<std::int64_t>{0, 103, 100}));
+  EXPECT_EQ(to.mat3("stress")[1], stress[3]);
+  EXPECT_EQ(to.x()[2], from.x()[0]);
+  to.real("pressure")[1] = 0.0;
+  to.x()[1] = Vec3::Zero();
+  to.v()[1] = Vec3::Ones();
+  EXPECT_EQ(to.unpack(some.data(), 2, 1, {"pressure", "x"}), some.size());
+  EXPECT_EQ(to.real("pressure")[1], pressure[3]);
+  EXPECT_EQ(to.x()[1], from.x()[3]);
+  EXPECT_EQ(to.v()[1], Vec3::Ones()); // not in the message
+  EXPECT_THROW(to.unpack(some.data(), 2, 2, {"pressure", "x"}), std::logic_error);
+  EXPECT_THROW(from.pack({0}, {"density"}, some), std::logic_error);
+}
+
 } // namespace
 } // namespace poro

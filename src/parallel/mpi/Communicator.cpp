@@ -1,0 +1,86 @@
+#include "parallel/mpi/Communicator.hpp"
+
+#include <mpi.h>
+
+#include <climits>
+#include <cstdint>
+#include <stdexcept>
+
+namespace poro {
+
+namespace {
+
+void check(int code, const char* what) {
+  if (code != MPI_SUCCESS) throw std::runtime_error(std::string("MPI error in ") + what);
+}
+
+template <class T> T reduce(T value, MPI_Datatype type, MPI_Op op) {
+  T result{};
+  check(MPI_Allreduce(&value, &result, 1, type, op, MPI_COMM_WORLD), "MPI_Allreduce");
+  return result;
+}
+
+} // namespace
+
+Communicator::Communicator(int& argc, char**& argv) {
+  int provided = 0;
+  check(MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
+  if (provided < MPI_THREAD_FUNNELED) throw std::runtime_error("the MPI library does not support threads");
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+Communicator::~Communicator() { MPI_Finalize(); }
+
+double Communicator::sum(double value) const { return reduce(value, MPI_DOUBLE, MPI_SUM); }
+double Communicator::max(double value) const { return reduce(value, MPI_DOUBLE, MPI_MAX); }
+double Communicator::min(double value) const { return reduce(value, MPI_DOUBLE, MPI_MIN); }
+long long Communicator::sum(long long value) const { return reduce(value, MPI_LONG_LONG, MPI_SUM); }
+long long Communicator::max(long long value) const { return reduce(value, MPI_LONG_LONG, MPI_MAX); }
+
+std::vector<double> Communicator::allGather(const std::vector<double>& values) const {
+  std::vector<double> all(values.size() * static_cast<std::size_t>(size_));
+  check(MPI_Allgather(values.data(), static_cast<int>(values.size()), MPI_DOUBLE, all.data(),
+                      static_cast<int>(values.size()), MPI_DOUBLE, MPI_COMM_WORLD),
+        "MPI_Allgather");
+  return all;
+}
+
+std::vector<std::vector<char>> Communicator::exchange(const std::vector<std::vector<char>>& toRank) const {
+  if (toRank.size() != static_cast<std::size_t>(size_)) throw std::logic_error("Communicator::exchange: one per rank");
+  std::vector<std::int64_t> sendCounts(toRank.size()), receiveCounts(toRank.size());
+  for (std::size_t q = 0; q < toRank.size(); ++q) {
+    sendCounts[q] = static_cast<int>(q) == rank_ ? 0 : static_cast<std::int64_t>(toRank[q].size());
+    if (sendCounts[q] > INT_MAX) throw std::runtime_error("a halo message above 2 GB");
+  }
+  check(MPI_Alltoall(sendCounts.data(), 1, MPI_INT64_T, receiveCounts.data(), 1, MPI_INT64_T, MPI_COMM_WORLD),
+        "MPI_Alltoall");
+  std::vector<std::vector<char>> received(toRank.size());
+  std::vector<MPI_Request> requests;
+  for (std::size_t q = 0; q < toRank.size(); ++q) {
+    if (receiveCounts[q] == 0) continue;
+    received[q].resize(static_cast<std::size_t>(receiveCounts[q]));
+    requests.emplace_back();
+    check(MPI_Irecv(received[q].data(), static_cast<int>(receiveCounts[q]), MPI_CHAR, static_cast<int>(q), 0,
+                    MPI_COMM_WORLD, &requests.back()),
+          "MPI_Irecv");
+  }
+  for (std::size_t q = 0; q < toRank.size(); ++q) {
+    if (sendCounts[q] == 0) continue;
+    requests.emplace_back();
+    check(MPI_Isend(toRank[q].data(), static_cast<int>(sendCounts[q]), MPI_CHAR, static_cast<int>(q), 0,
+                    MPI_COMM_WORLD, &requests.back()),
+          "MPI_Isend");
+  }
+  check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE), "MPI_Waitall");
+  return received;
+}
+
+void Communicator::barrier() const { check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier"); }
+
+void Communicator::abort(int code) const {
+  MPI_Abort(MPI_COMM_WORLD, code);
+  std::abort();
+}
+
+} // namespace poro

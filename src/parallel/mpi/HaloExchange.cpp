@@ -1,0 +1,135 @@
+#include "parallel/mpi/HaloExchange.hpp"
+
+#include "parallel/HaloPattern.hpp"
+
+#include <cstdint>
+#include <cstring>
+#include <numeric>
+#include <stdexcept>
+
+namespace poro {
+
+namespace {
+
+void putCount(std::vector<char>& out, std::uint64_t value) {
+  const std::size_t at = out.size();
+  out.resize(at + sizeof value);
+  std::memcpy(out.data() + at, &value, sizeof value);
+}
+
+std::uint64_t takeCount(const std::vector<char>& in, std::size_t& at) {
+  std::uint64_t value = 0;
+  if (at + sizeof value > in.size()) throw std::logic_error("HaloExchange: a message ends early");
+  std::memcpy(&value, in.data() + at, sizeof value);
+  at += sizeof value;
+  return value;
+}
+
+/// Bytes one particle of `set` takes in a message with the fields `names` (all when empty).
+std::size_t bytesPerParticle(const ParticleSet& set, const std::vector<std::string>& names) {
+  std::vector<char> one;
+  set.pack(set.size() > 0 ? std::vector<Index>{0} : std::vector<Index>{}, names, one);
+  if (set.size() > 0) return one.size();
+  std::size_t bytes = 0; // no particle to measure: from the field types
+  for (const std::string& name : names.empty() ? set.fieldNames() : names) {
+    switch (set.info(name)->type) {
+    case FieldType::Real: bytes += sizeof(Real); break;
+    case FieldType::Vec3: bytes += sizeof(Vec3); break;
+    case FieldType::Mat3: bytes += sizeof(Mat3); break;
+    case FieldType::Int: bytes += sizeof(std::int64_t); break;
+    }
+  }
+  return bytes;
+}
+
+} // namespace
+
+std::size_t HaloExchange::ghosts(std::size_t set) const {
+  const auto& counts = received_.at(set);
+  return std::accumulate(counts.begin(), counts.end(), std::size_t{0});
+}
+
+std::size_t HaloExchange::lent(std::size_t set) const {
+  std::size_t n = 0;
+  for (const auto& slots : lent_.at(set)) n += slots.size();
+  return n;
+}
+
+void HaloExchange::dropGhosts(ParticleSystem& particles) const {
+  for (std::size_t s = 0; s < owned_.size() && s < particles.size(); ++s) particles[s].resize(owned_[s]);
+}
+
+std::vector<std::vector<char>> HaloExchange::pack(const ParticleSystem& particles,
+                                                  const std::vector<std::string>& names, bool withCounts) const {
+  const std::size_t ranks = lent_.empty() ? 0 : lent_.front().size();
+  std::vector<std::vector<char>> messages(ranks);
+  for (std::size_t q = 0; q < ranks; ++q) {
+    bool any = false;
+    for (std::size_t s = 0; s < particles.size(); ++s) any = any || !lent_[s][q].empty();
+    if (!any) continue; // no message: the receiver reads an empty one as no ghosts from here
+    for (std::size_t s = 0; s < particles.size(); ++s) {
+      if (withCounts) {
+        putCount(messages[q], lent_[s][q].size());
+        putCount(messages[q], bytesPerParticle(particles[s], names));
+      }
+      particles[s].pack(lent_[s][q], names, messages[q]);
+    }
+  }
+  return messages;
+}
+
+void HaloExchange::build(ParticleSystem& particles, double reach, const Communicator& comm) {
+  dropGhosts(particles);
+  const std::size_t ranks = static_cast<std::size_t>(comm.size());
+  owned_.assign(particles.size(), 0);
+  std::vector<const std::vector<Vec3>*> positions;
+  for (std::size_t s = 0; s < particles.size(); ++s) {
+    owned_[s] = particles[s].size();
+    positions.push_back(&particles[s].x());
+  }
+  const Box mine = boundingBox(positions);
+  const std::vector<double> flat = comm.allGather({mine.lo.x(), mine.lo.y(), mine.lo.z(), mine.hi.x(), mine.hi.y(),
+                                                   mine.hi.z()});
+  std::vector<Box> boxes(ranks);
+  for (std::size_t q = 0; q < ranks; ++q) {
+    boxes[q].lo = Vec3(flat[6 * q], flat[6 * q + 1], flat[6 * q + 2]);
+    boxes[q].hi = Vec3(flat[6 * q + 3], flat[6 * q + 4], flat[6 * q + 5]);
+  }
+  lent_.assign(particles.size(), {});
+  for (std::size_t s = 0; s < particles.size(); ++s)
+    lent_[s] = haloSendLists(particles[s].x(), boxes, comm.rank(), reach);
+
+  const std::vector<std::vector<char>> received = comm.exchange(pack(particles, {}, true));
+  received_.assign(particles.size(), std::vector<std::size_t>(ranks, 0));
+  std::vector<std::size_t> read(ranks, 0);
+  for (std::size_t q = 0; q < ranks; ++q)
+    for (std::size_t s = 0; s < particles.size() && !received[q].empty(); ++s) {
+      ParticleSet& set = particles[s];
+      const std::size_t count = takeCount(received[q], read[q]);
+      if (takeCount(received[q], read[q]) != bytesPerParticle(set, {}))
+        throw std::logic_error("HaloExchange: set '" + set.name() + "' has other fields on rank " + std::to_string(q));
+      const std::size_t first = set.size();
+      set.resize(first + count);
+      read[q] += set.unpack(received[q].data() + read[q], count, first, {});
+      received_[s][q] = count;
+    }
+}
+
+void HaloExchange::refresh(ParticleSystem& particles, const std::vector<std::string>& names,
+                           const Communicator& comm) const {
+  const std::vector<std::vector<char>> received = comm.exchange(pack(particles, names, false));
+  for (std::size_t s = 0; s < particles.size(); ++s) {
+    std::size_t first = owned_[s];
+    for (std::size_t q = 0; q < received.size(); ++q) {
+      const std::size_t count = received_[s][q];
+      if (count > 0) {
+        std::size_t at = 0; // this set's data in q's message: after the earlier sets'
+        for (std::size_t t = 0; t < s; ++t) at += received_[t][q] * bytesPerParticle(particles[t], names);
+        particles[s].unpack(received[q].data() + at, count, first, names);
+      }
+      first += count;
+    }
+  }
+}
+
+} // namespace poro

@@ -1,0 +1,43 @@
+#pragma once
+/// Ghost particles of a parallel run (ARCHITECTURE.md "Decomposed runs"): each rank's sets hold its own particles
+/// first, then copies of the particles other ranks lend it, which the neighbour search sees as ordinary read-only
+/// particles. build() lends every particle within the reach (support radius plus skin) of another subdomain
+/// (parallel/HaloPattern.hpp) with all its fields; refresh() then updates chosen fields of the same ghosts at the
+/// fixed points of a step where their owners changed them.
+
+#include "parallel/mpi/Communicator.hpp"
+#include "sph/ParticleSystem.hpp"
+
+#include <string>
+#include <vector>
+
+namespace poro {
+
+class HaloExchange {
+public:
+  /// Drops the ghosts of the last build, then exchanges the particles within `reach` of each other's subdomain box and
+  /// appends those received to their sets: in rank order, each rank's in its slot order. Every rank must hold the
+  /// same sets with the same fields.
+  void build(ParticleSystem& particles, double reach, const Communicator& comm);
+  /// Copies the fields `names` (all fields when empty) of the lent particles into their ghosts on every rank.
+  void refresh(ParticleSystem& particles, const std::vector<std::string>& names, const Communicator& comm) const;
+  /// Removes the ghosts (before migration, output or a rebuild).
+  void dropGhosts(ParticleSystem& particles) const;
+
+  /// Set s holds its own particles in slots [0, owned(s)) and ghosts in [owned(s), owned(s) + ghosts(s)).
+  std::size_t owned(std::size_t set) const { return owned_.at(set); }
+  std::size_t ghosts(std::size_t set) const;
+  /// Particles of set s lent to other ranks, over all of them.
+  std::size_t lent(std::size_t set) const;
+
+private:
+  /// One message per rank with, per set, the particles lent to it (fields `names`); `withCounts` puts the particle
+  /// count and bytes per particle ahead of each set's data.
+  std::vector<std::vector<char>> pack(const ParticleSystem& particles, const std::vector<std::string>& names,
+                                      bool withCounts) const;
+  std::vector<std::size_t> owned_;                    ///< per set
+  std::vector<std::vector<std::vector<Index>>> lent_; ///< [set][rank]: slots lent to that rank
+  std::vector<std::vector<std::size_t>> received_;    ///< [set][rank]: ghosts from that rank
+};
+
+} // namespace poro
