@@ -48,8 +48,7 @@ DecomposedParticles decomposeParticles(const ParticleSystem& particles, const De
     points.insert(points.end(), particles[s].x().begin(), particles[s].x().end());
     weights.insert(weights.end(), particles[s].size(), weightOf(particles[s].kind(), settings));
   }
-  const std::vector<int> owner =
-      partitionPoints(points, weights, parts, settings.method, particles.supportRadius());
+  const std::vector<int> owner = Partition::build(points, weights, parts, settings.method).owners(points);
 
   DecomposedParticles result;
   DecompositionSummary& summary = result.summary;

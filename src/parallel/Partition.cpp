@@ -1,7 +1,5 @@
 #include "parallel/Partition.hpp"
 
-#include "core/Error.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -11,98 +9,17 @@ namespace poro {
 
 namespace {
 
-using Slots = std::vector<std::size_t>;
+constexpr int kHilbertBits = 21; // 3 x 21 bits: the largest order whose index fits 63 bits
 
-/// How many of the first points of `order` make up the share `target` of their weight: the count whose weight is
-/// closest to it, at least `minLeft` and leaving at least `minRight`.
-std::size_t weightedCut(const Slots& order, std::size_t begin, std::size_t end, const std::vector<double>& weights,
-                        double target, std::size_t minLeft, std::size_t minRight) {
-  double total = 0.0;
-  for (std::size_t k = begin; k < end; ++k) total += weights[order[k]];
-  const double wanted = target * total;
-  std::size_t best = minLeft;
-  double sum = 0.0, bestMiss = INFINITY;
-  for (std::size_t count = 0; count <= end - begin; ++count) {
-    if (count >= minLeft && count + minRight <= end - begin) {
-      const double miss = std::abs(sum - wanted);
-      if (miss < bestMiss) {
-        bestMiss = miss;
-        best = count;
-      }
-    }
-    if (count < end - begin) sum += weights[order[begin + count]];
-  }
-  return best;
+double reduced(const std::function<void(std::vector<double>&)>& reduce, double value) {
+  std::vector<double> v{value};
+  reduce(v);
+  return v.front();
 }
 
-/// Recursive coordinate bisection of order[begin, end) into `parts` parts numbered from `first`.
-void bisect(const std::vector<Vec3>& points, const std::vector<double>& weights, Slots& order, std::size_t begin,
-            std::size_t end, int parts, int first, std::vector<int>& owner) {
-  if (parts == 1 || end - begin <= 1) {
-    for (std::size_t k = begin; k < end; ++k) owner[order[k]] = first;
-    return;
-  }
-  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
-  for (std::size_t k = begin; k < end; ++k) {
-    lo = lo.cwiseMin(points[order[k]]);
-    hi = hi.cwiseMax(points[order[k]]);
-  }
-  int axis = 0;
-  (hi - lo).maxCoeff(&axis);
-  const auto byAxis = [&](std::size_t a, std::size_t b) {
-    return points[a][axis] < points[b][axis] || (points[a][axis] == points[b][axis] && a < b);
-  };
-  std::sort(order.begin() + static_cast<std::ptrdiff_t>(begin), order.begin() + static_cast<std::ptrdiff_t>(end),
-            byAxis);
-  const int left = parts / 2;
-  const std::size_t count = end - begin;
-  // Each side keeps at least one point per part while there are enough points.
-  const std::size_t minLeft = std::min<std::size_t>(static_cast<std::size_t>(left), count / 2);
-  const std::size_t minRight = std::min<std::size_t>(static_cast<std::size_t>(parts - left), count - minLeft);
-  const std::size_t cut = begin + weightedCut(order, begin, end, weights, static_cast<double>(left) / parts,
-                                              minLeft, minRight);
-  bisect(points, weights, order, begin, cut, left, first, owner);
-  bisect(points, weights, order, cut, end, parts - left, first + left, owner);
-}
-
-void hilbertSplit(const std::vector<Vec3>& points, const std::vector<double>& weights, int parts, double cellSize,
-                  std::vector<int>& owner) {
-  const std::size_t n = points.size();
-  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
-  for (const Vec3& p : points) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  // The curve's order covers the largest extent; beyond 2^21 cells per side the cells grow instead (63-bit keys).
-  const double cells = std::max(1.0, std::ceil((hi - lo).maxCoeff() / cellSize) + 1.0);
-  int bits = 1;
-  while (bits < 21 && std::ldexp(1.0, bits) < cells) ++bits;
-  const double size = std::max(cellSize, (hi - lo).maxCoeff() / (std::ldexp(1.0, bits) - 1.0));
-  std::vector<std::pair<std::uint64_t, std::size_t>> keys(n);
-  const auto cell = [&](double x, double origin) {
-    return static_cast<std::uint32_t>(std::min(std::ldexp(1.0, bits) - 1.0, std::floor((x - origin) / size)));
-  };
-  for (std::size_t i = 0; i < n; ++i)
-    keys[i] = {hilbertIndex(cell(points[i].x(), lo.x()), cell(points[i].y(), lo.y()), cell(points[i].z(), lo.z()),
-                            bits),
-               i};
-  std::sort(keys.begin(), keys.end());
-  Slots order(n);
-  for (std::size_t k = 0; k < n; ++k) order[k] = keys[k].second;
-  // Cut the curve part by part: each cut takes its share of what is left, so rounding does not pile up at the end.
-  std::size_t begin = 0;
-  for (int p = 0; p < parts; ++p) {
-    const int left = parts - p;
-    std::size_t end = n;
-    if (left > 1) {
-      const std::size_t remaining = n - begin;
-      const std::size_t minLeft = std::min<std::size_t>(1, remaining);
-      const std::size_t minRight = std::min<std::size_t>(static_cast<std::size_t>(left - 1), remaining - minLeft);
-      end = begin + weightedCut(order, begin, n, weights, 1.0 / left, minLeft, minRight);
-    }
-    for (std::size_t k = begin; k < end; ++k) owner[order[k]] = p;
-    begin = end;
-  }
+/// The better of two cuts: the one whose weight below is closer to the target (the lower one on a tie).
+template <class T> T closer(T a, double weightA, T b, double weightB, double target) {
+  return std::abs(weightA - target) <= std::abs(weightB - target) ? a : b;
 }
 
 } // namespace
@@ -148,20 +65,174 @@ std::uint64_t hilbertIndex(std::uint32_t i, std::uint32_t j, std::uint32_t k, in
   return index;
 }
 
-std::vector<int> partitionPoints(const std::vector<Vec3>& points, const std::vector<double>& weights, int parts,
-                                 PartitionMethod method, double cellSize) {
-  if (weights.size() != points.size()) throw std::logic_error("partitionPoints: one weight per point expected");
-  if (parts < 1) throw std::logic_error("partitionPoints: at least one part expected");
-  std::vector<int> owner(points.size(), 0);
-  if (points.empty() || parts == 1) return owner;
-  if (method == PartitionMethod::HilbertCurve) {
-    hilbertSplit(points, weights, parts, cellSize, owner);
-  } else {
-    Slots order(points.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    bisect(points, weights, order, 0, order.size(), parts, 0, owner);
+Partition Partition::build(const std::vector<Vec3>& points, const std::vector<double>& weights, int parts,
+                           PartitionMethod method, const Reductions& reductions) {
+  if (weights.size() != points.size()) throw std::logic_error("Partition::build: one weight per point expected");
+  if (parts < 1) throw std::logic_error("Partition::build: at least one part expected");
+  Partition p;
+  p.parts_ = parts;
+  p.method_ = method;
+  if (method == PartitionMethod::RecursiveBisection) {
+    std::vector<std::size_t> slots(points.size());
+    std::iota(slots.begin(), slots.end(), std::size_t{0});
+    p.buildNode(slots, points, weights, parts, 0, reductions);
+    return p;
   }
-  return owner;
+  // Hilbert curve: the grid spans every process's points.
+  std::vector<double> lo(3, INFINITY), hi(3, -INFINITY);
+  for (const Vec3& x : points)
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], x[a]);
+      hi[a] = std::max(hi[a], x[a]);
+    }
+  reductions.min(lo);
+  reductions.max(hi);
+  double extent = 0.0;
+  for (int a = 0; a < 3; ++a) extent = std::max(extent, hi[a] - lo[a]);
+  p.origin_ = lo[0] <= hi[0] ? Vec3(lo[0], lo[1], lo[2]) : Vec3::Zero();
+  p.cellSize_ = extent > 0.0 ? extent / (std::ldexp(1.0, kHilbertBits) - 1.0) : 1.0;
+  std::vector<std::pair<std::uint64_t, double>> keyed(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) keyed[i] = {p.keyOf(points[i]), weights[i]};
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<double> below(keyed.size() + 1, 0.0); // below[k]: weight of the first k keys
+  for (std::size_t k = 0; k < keyed.size(); ++k) below[k + 1] = below[k] + keyed[k].second;
+  const auto weightBelow = [&](std::uint64_t key) {
+    const auto at = std::lower_bound(keyed.begin(), keyed.end(), key,
+                                     [](const std::pair<std::uint64_t, double>& k, std::uint64_t v) { return k.first < v; });
+    return below[static_cast<std::size_t>(at - keyed.begin())];
+  };
+  const double total = reduced(reductions.sum, below.back());
+  // Every cut at once: bisection on the key, one reduction of all cuts' weights per halving.
+  const std::size_t cuts = static_cast<std::size_t>(parts - 1);
+  std::vector<std::uint64_t> a(cuts, 0), b(cuts, std::uint64_t{1} << (3 * kHilbertBits));
+  std::vector<double> weightA(cuts, 0.0), weightB(cuts, total), target(cuts);
+  for (std::size_t c = 0; c < cuts; ++c) target[c] = total * static_cast<double>(c + 1) / parts;
+  for (int halving = 0; halving < 3 * kHilbertBits; ++halving) {
+    std::vector<std::uint64_t> mid(cuts);
+    std::vector<double> weight(cuts);
+    for (std::size_t c = 0; c < cuts; ++c) {
+      mid[c] = a[c] + (b[c] - a[c]) / 2;
+      weight[c] = weightBelow(mid[c]);
+    }
+    reductions.sum(weight);
+    for (std::size_t c = 0; c < cuts; ++c) {
+      if (b[c] - a[c] <= 1) continue;
+      if (weight[c] < target[c]) {
+        a[c] = mid[c];
+        weightA[c] = weight[c];
+      } else {
+        b[c] = mid[c];
+        weightB[c] = weight[c];
+      }
+    }
+  }
+  p.firstKey_.assign(1, 0);
+  for (std::size_t c = 0; c < cuts; ++c)
+    p.firstKey_.push_back(std::max(p.firstKey_.back(), closer(a[c], weightA[c], b[c], weightB[c], target[c])));
+  return p;
+}
+
+int Partition::buildNode(std::vector<std::size_t>& slots, const std::vector<Vec3>& points,
+                         const std::vector<double>& weights, int parts, int first, const Reductions& reductions) {
+  const int index = static_cast<int>(nodes_.size());
+  nodes_.emplace_back();
+  if (parts == 1) {
+    nodes_[static_cast<std::size_t>(index)].part = first;
+    return index;
+  }
+  std::vector<double> lo(3, INFINITY), hi(3, -INFINITY);
+  double weight = 0.0;
+  for (const std::size_t i : slots) {
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], points[i][a]);
+      hi[a] = std::max(hi[a], points[i][a]);
+    }
+    weight += weights[i];
+  }
+  reductions.min(lo);
+  reductions.max(hi);
+  const double total = reduced(reductions.sum, weight);
+  int axis = 0;
+  for (int a = 1; a < 3; ++a)
+    if (hi[a] - lo[a] > hi[axis] - lo[axis]) axis = a;
+  const int left = parts / 2;
+  const double target = total * left / parts;
+  const auto weightBelow = [&](double cut) {
+    double w = 0.0;
+    for (const std::size_t i : slots)
+      if (points[i][axis] < cut) w += weights[i];
+    return reduced(reductions.sum, w);
+  };
+  double cut = 0.0;
+  if (lo[axis] <= hi[axis]) { // some process holds points here
+    // Bisection on the coordinate, weight(< a) < target <= weight(< b), down to 1e-9 of the box: coordinates closer
+    // than that count as one layer (about 30 halvings, each one reduction).
+    double a = lo[axis], b = std::nextafter(hi[axis], INFINITY);
+    double weightA = 0.0, weightB = total;
+    const double resolution = 1e-9 * (b - a);
+    while (b - a > resolution) {
+      const double mid = a + 0.5 * (b - a);
+      if (!(mid > a && mid < b)) break;
+      const double w = weightBelow(mid);
+      (w < target ? a : b) = mid;
+      (w < target ? weightA : weightB) = w;
+    }
+    cut = closer(a, weightA, b, weightB, target);
+    // Into the middle of the gap between the coordinates on either side, so that a particle that moves a little
+    // stays where it was.
+    double below = -INFINITY, above = INFINITY;
+    for (const std::size_t i : slots) {
+      const double x = points[i][axis];
+      if (x < cut) below = std::max(below, x);
+      else above = std::min(above, x);
+    }
+    below = reduced(reductions.max, below);
+    above = reduced(reductions.min, above);
+    if (std::isfinite(below) && std::isfinite(above)) {
+      const double middle = below + 0.5 * (above - below);
+      cut = middle > below ? middle : above;
+    }
+  }
+  std::vector<std::size_t> leftSlots, rightSlots;
+  for (const std::size_t i : slots) (points[i][axis] < cut ? leftSlots : rightSlots).push_back(i);
+  slots.clear();
+  slots.shrink_to_fit();
+  const int l = buildNode(leftSlots, points, weights, left, first, reductions);
+  const int r = buildNode(rightSlots, points, weights, parts - left, first + left, reductions);
+  Node& node = nodes_[static_cast<std::size_t>(index)];
+  node.axis = axis;
+  node.cut = cut;
+  node.left = l;
+  node.right = r;
+  return index;
+}
+
+std::uint64_t Partition::keyOf(const Vec3& x) const {
+  std::uint32_t cell[3];
+  const double last = std::ldexp(1.0, kHilbertBits) - 1.0;
+  for (int a = 0; a < 3; ++a) {
+    const double c = std::floor((x[a] - origin_[a]) / cellSize_);
+    cell[a] = static_cast<std::uint32_t>(c > 0.0 ? std::min(c, last) : 0.0); // outside the grid (or NaN): its edge
+  }
+  return hilbertIndex(cell[0], cell[1], cell[2], kHilbertBits);
+}
+
+int Partition::ownerOf(const Vec3& x) const {
+  if (method_ == PartitionMethod::HilbertCurve) {
+    if (firstKey_.empty()) return 0;
+    const std::uint64_t key = keyOf(x);
+    return static_cast<int>(std::upper_bound(firstKey_.begin(), firstKey_.end(), key) - firstKey_.begin()) - 1;
+  }
+  std::size_t n = 0;
+  while (nodes_[n].axis >= 0) n = static_cast<std::size_t>(x[nodes_[n].axis] < nodes_[n].cut ? nodes_[n].left
+                                                                                                : nodes_[n].right);
+  return nodes_[n].part;
+}
+
+std::vector<int> Partition::owners(const std::vector<Vec3>& x) const {
+  std::vector<int> result(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) result[i] = ownerOf(x[i]);
+  return result;
 }
 
 } // namespace poro

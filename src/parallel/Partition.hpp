@@ -4,12 +4,17 @@
 /// rank exchanges grows with its surface.
 ///   recursiveBisection  cuts the longest side of the region's bounding box at the weighted median, recursively
 ///                       (parts in proportion n/2 : n - n/2), so every part is a box and neighbours share faces;
-///   hilbertCurve        orders the particles along a Hilbert curve through cells of the given size and cuts the
-///                       curve into n pieces of equal weight: cheaper, less regular boundaries.
-/// Both are deterministic: equal input gives equal parts, whatever the thread count.
+///   hilbertCurve        orders space along a Hilbert curve (2^21 cells per side of the bounding box) and cuts it
+///                       into n pieces of equal weight: ragged boundaries, but one number per cut.
+/// A Partition is a function of position (the cuts), so a particle that moves is owned by the part its new position
+/// lies in (migration), and the same cuts hold on every rank. The cuts are found from sums over all particles only,
+/// so the particles may be spread over ranks (`Reductions`: a run) or all in one process (decomposePar), with the
+/// same result. Deterministic: equal input gives equal cuts, whatever the thread or rank count.
 
 #include "core/Types.hpp"
 
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,11 +27,45 @@ const char* toString(PartitionMethod method);
 std::vector<std::string> partitionMethodNames();
 PartitionMethod partitionMethodFromName(const std::string& name);
 
-/// The part (0 .. parts - 1) of every point. `weights` are > 0, one per point; `cellSize` > 0 is the Hilbert curve's
-/// resolution (the support radius: finer gains nothing, as a cell's particles are neighbours anyway). With fewer
-/// points than parts the last parts are empty; otherwise every part gets at least one point.
-std::vector<int> partitionPoints(const std::vector<Vec3>& points, const std::vector<double>& weights, int parts,
-                                 PartitionMethod method, double cellSize);
+/// Element-wise sums, minima and maxima of a vector over every process holding particles, in place. The defaults
+/// are for one process (nothing to combine).
+struct Reductions {
+  std::function<void(std::vector<double>&)> sum = [](std::vector<double>&) {};
+  std::function<void(std::vector<double>&)> min = [](std::vector<double>&) {};
+  std::function<void(std::vector<double>&)> max = [](std::vector<double>&) {};
+};
+
+class Partition {
+public:
+  /// Cuts the points of all processes (this one's `points`, `weights` > 0) into `parts` parts. Cuts fall between
+  /// particle coordinates (a lattice layer is never split), each as close to its share of the weight as whole
+  /// particles (or layers) allow.
+  static Partition build(const std::vector<Vec3>& points, const std::vector<double>& weights, int parts,
+                         PartitionMethod method, const Reductions& reductions = {});
+
+  int parts() const { return parts_; }
+  /// The part whose region holds x (any x: the regions tile space).
+  int ownerOf(const Vec3& x) const;
+  std::vector<int> owners(const std::vector<Vec3>& x) const;
+
+private:
+  struct Node {
+    int axis = -1;   ///< -1: a leaf
+    double cut = 0;  ///< x[axis] < cut goes left
+    int left = -1, right = -1;
+    int part = 0;    ///< a leaf's part
+  };
+  int buildNode(std::vector<std::size_t>& slots, const std::vector<Vec3>& points, const std::vector<double>& weights,
+                int parts, int first, const Reductions& reductions);
+  std::uint64_t keyOf(const Vec3& x) const;
+
+  int parts_ = 1;
+  PartitionMethod method_ = PartitionMethod::RecursiveBisection;
+  std::vector<Node> nodes_;               ///< recursiveBisection: the cut tree, root first
+  Vec3 origin_ = Vec3::Zero();            ///< hilbertCurve: the grid
+  double cellSize_ = 1.0;
+  std::vector<std::uint64_t> firstKey_;   ///< hilbertCurve: part p holds keys [firstKey_[p], firstKey_[p + 1])
+};
 
 /// Position of a cell (i, j, k), each coordinate below 2^bits, along the 3-D Hilbert curve of that order: cells next
 /// to each other on the curve share a face.

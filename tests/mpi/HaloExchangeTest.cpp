@@ -31,7 +31,8 @@ Global globalCloud(int ranks) {
     g.x.emplace_back(u(rng), 0.5 * u(rng), 0.5 * u(rng));
     g.setOf.push_back(i < 2000 ? 0 : 1);
   }
-  g.owner = partitionPoints(g.x, std::vector<double>(g.x.size(), 1.0), ranks, PartitionMethod::RecursiveBisection, 0.1);
+  g.owner = Partition::build(g.x, std::vector<double>(g.x.size(), 1.0), ranks, PartitionMethod::RecursiveBisection)
+                .owners(g.x);
   return g;
 }
 

@@ -38,6 +38,17 @@ double Communicator::min(double value) const { return reduce(value, MPI_DOUBLE, 
 long long Communicator::sum(long long value) const { return reduce(value, MPI_LONG_LONG, MPI_SUM); }
 long long Communicator::max(long long value) const { return reduce(value, MPI_LONG_LONG, MPI_MAX); }
 
+namespace {
+void reduceInPlace(std::vector<double>& values, MPI_Op op) {
+  check(MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, op, MPI_COMM_WORLD),
+        "MPI_Allreduce");
+}
+} // namespace
+
+void Communicator::sum(std::vector<double>& values) const { reduceInPlace(values, MPI_SUM); }
+void Communicator::min(std::vector<double>& values) const { reduceInPlace(values, MPI_MIN); }
+void Communicator::max(std::vector<double>& values) const { reduceInPlace(values, MPI_MAX); }
+
 std::vector<double> Communicator::allGather(const std::vector<double>& values) const {
   std::vector<double> all(values.size() * static_cast<std::size_t>(size_));
   check(MPI_Allgather(values.data(), static_cast<int>(values.size()), MPI_DOUBLE, all.data(),

@@ -25,6 +25,10 @@ public:
   double min(double value) const;
   long long sum(long long value) const;
   long long max(long long value) const;
+  /// Element-wise over every rank, in place (the same length on every rank).
+  void sum(std::vector<double>& values) const;
+  void min(std::vector<double>& values) const;
+  void max(std::vector<double>& values) const;
   /// Every rank's `values` (the same length on every rank), concatenated in rank order.
   std::vector<double> allGather(const std::vector<double>& values) const;
   /// Sends toRank[q] to rank q (toRank has size() entries, its own ignored) and returns, per rank, what that rank sent

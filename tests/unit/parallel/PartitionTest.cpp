@@ -1,6 +1,6 @@
 // Partitions (parallel/Partition.hpp): the Hilbert index is a face-connected bijection; both methods give every part
-// its share of the weight within what whole particles allow, bisection gives disjoint boxes, and the result is
-// deterministic.
+// its share of the weight within what whole particles allow, bisection gives disjoint boxes, ownership is a function
+// of position that tiles space, and the result is deterministic.
 
 #include "parallel/Partition.hpp"
 
@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numeric>
 #include <random>
 #include <set>
 
@@ -65,7 +67,8 @@ TEST(Partition, BisectionBalancesWithinWholeParticlesAndCutsDisjointBoxes) {
   const Cloud c = randomCloud(5000, 7);
   const double total = std::accumulate(c.weights.begin(), c.weights.end(), 0.0);
   for (int parts = 1; parts <= 9; ++parts) {
-    const std::vector<int> owner = partitionPoints(c.points, c.weights, parts, PartitionMethod::RecursiveBisection, 0.1);
+    const std::vector<int> owner =
+        Partition::build(c.points, c.weights, parts, PartitionMethod::RecursiveBisection).owners(c.points);
     // Each cut misses its share by at most half the heaviest particle (2.0), and a part lies below at most
     // ceil(log2 parts) cuts, each scaling the misses above it by at most 1.
     const double levels = std::ceil(std::log2(static_cast<double>(parts)));
@@ -92,40 +95,67 @@ TEST(Partition, HilbertCurveBalancesWithinWholeParticles) {
   const Cloud c = randomCloud(5000, 11);
   const double total = std::accumulate(c.weights.begin(), c.weights.end(), 0.0);
   for (int parts = 1; parts <= 9; ++parts) {
-    const std::vector<int> owner = partitionPoints(c.points, c.weights, parts, PartitionMethod::HilbertCurve, 0.1);
-    // Cut p takes 1/(parts - p) of what is left to within half a particle (1.0); the misses of earlier cuts spread
-    // over the later parts, which adds at most 1.0 (1/(n-1) + 1/(n-2) + ... + 1).
-    double harmonic = 0.0;
-    for (int k = 1; k < parts; ++k) harmonic += 1.0 / k;
+    const std::vector<int> owner =
+        Partition::build(c.points, c.weights, parts, PartitionMethod::HilbertCurve).owners(c.points);
+    // Each cut lies within half the heaviest particle (1.0) of its share p W / n of the curve's weight (2^63 keys:
+    // no two of these points share one), so a part, between two cuts, is within 2 x 1.0 of W / n.
     const std::vector<double> w = partWeights(c, owner, parts);
     for (int p = 0; p < parts; ++p)
-      EXPECT_NEAR(w[static_cast<std::size_t>(p)], total / parts, 1.0 * (1.0 + harmonic) + 1e-9)
-          << parts << " parts, part " << p;
+      EXPECT_NEAR(w[static_cast<std::size_t>(p)], total / parts, 2.0 + 1e-9) << parts << " parts, part " << p;
   }
 }
 
-TEST(Partition, IsDeterministicAndFillsEveryPartWhenItCan) {
+TEST(Partition, IsDeterministicAndGivesEqualPointsOneEach) {
   const Cloud c = randomCloud(40, 3);
+  const std::vector<double> equal(c.points.size(), 1.0);
   for (const PartitionMethod method : {PartitionMethod::RecursiveBisection, PartitionMethod::HilbertCurve}) {
-    const auto a = partitionPoints(c.points, c.weights, 40, method, 0.1);
-    EXPECT_EQ(a, partitionPoints(c.points, c.weights, 40, method, 0.1));
-    EXPECT_EQ(std::set<int>(a.begin(), a.end()).size(), 40u) << toString(method); // one point each
-    const auto fewer = partitionPoints(c.points, c.weights, 50, method, 0.1);
-    EXPECT_EQ(std::set<int>(fewer.begin(), fewer.end()).size(), 40u) << toString(method);
-    EXPECT_TRUE(partitionPoints({}, {}, 4, method, 0.1).empty());
+    const auto a = Partition::build(c.points, c.weights, 7, method).owners(c.points);
+    EXPECT_EQ(a, Partition::build(c.points, c.weights, 7, method).owners(c.points));
+    const auto one = Partition::build(c.points, equal, 40, method).owners(c.points);
+    EXPECT_EQ(std::set<int>(one.begin(), one.end()).size(), 40u) << toString(method); // one point each
+    for (const int owner : Partition::build(c.points, equal, 50, method).owners(c.points)) {
+      EXPECT_GE(owner, 0);
+      EXPECT_LT(owner, 50);
+    }
+    EXPECT_EQ(Partition::build({}, {}, 4, method).ownerOf(Vec3(1, 2, 3)) >= 0, true);
   }
-  EXPECT_THROW(partitionPoints(c.points, {}, 2, PartitionMethod::HilbertCurve, 0.1), std::logic_error);
+  EXPECT_THROW(Partition::build(c.points, {}, 2, PartitionMethod::HilbertCurve), std::logic_error);
+}
+
+TEST(Partition, OwnershipIsAFunctionOfPositionThatTilesSpace) {
+  // A lattice of spacing 1: cuts fall midway between layers, so every particle keeps its part while it moves less
+  // than half a spacing across a cut, and any position, inside the lattice's box or far outside, has a part.
+  std::vector<Vec3> lattice;
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 6; ++j)
+      for (int k = 0; k < 6; ++k) lattice.emplace_back(i, j, k);
+  const std::vector<double> weights(lattice.size(), 1.0);
+  const Partition bisection = Partition::build(lattice, weights, 4, PartitionMethod::RecursiveBisection);
+  const std::vector<int> owner = bisection.owners(lattice);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> jitter(-0.49, 0.49), far(-100.0, 100.0);
+  for (std::size_t i = 0; i < lattice.size(); ++i)
+    EXPECT_EQ(bisection.ownerOf(lattice[i] + Vec3(jitter(rng), jitter(rng), jitter(rng))), owner[i]) << i;
+  for (const PartitionMethod method : {PartitionMethod::RecursiveBisection, PartitionMethod::HilbertCurve}) {
+    const Partition p = Partition::build(lattice, weights, 4, method);
+    for (int k = 0; k < 100; ++k) {
+      const int part = p.ownerOf(Vec3(far(rng), far(rng), far(rng)));
+      EXPECT_GE(part, 0);
+      EXPECT_LT(part, 4);
+    }
+    EXPECT_GE(p.ownerOf(Vec3::Constant(std::numeric_limits<double>::quiet_NaN())), 0);
+  }
 }
 
 TEST(Partition, HilbertCurveKeepsPartsCompact) {
-  // A 16^3 lattice in 8 parts: a Hilbert curve of order 4 visits the octants one after another, so each part is
-  // exactly one 8^3 octant.
+  // A 16^3 lattice in 8 parts: a Hilbert curve visits the octants of its box one after another, and the lattice's
+  // octants are the grid's (8 of its 16 layers lie in each half), so each part is exactly one 8^3 octant.
   std::vector<Vec3> points;
   for (int i = 0; i < 16; ++i)
     for (int j = 0; j < 16; ++j)
       for (int k = 0; k < 16; ++k) points.emplace_back(i + 0.5, j + 0.5, k + 0.5);
   const std::vector<double> weights(points.size(), 1.0);
-  const auto owner = partitionPoints(points, weights, 8, PartitionMethod::HilbertCurve, 1.0);
+  const auto owner = Partition::build(points, weights, 8, PartitionMethod::HilbertCurve).owners(points);
   std::vector<std::set<int>> octants(8);
   for (std::size_t i = 0; i < points.size(); ++i)
     octants[static_cast<std::size_t>(owner[i])].insert((points[i].x() > 8) + 2 * (points[i].y() > 8) +
