@@ -117,7 +117,7 @@ ParticleSystem mergePieces(std::vector<ParticleSystem>&& pieces, const std::vect
     const auto& ids = into->integer(field::id);
     std::vector<Index> order(into->size());
     std::iota(order.begin(), order.end(), Index{0});
-    std::sort(order.begin(), order.end(), [&](Index a, Index b) { return ids[a] < ids[b]; });
+    std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) { return ids[a] < ids[b]; });
     for (std::size_t k = 1; k < order.size(); ++k)
       if (ids[order[k]] == ids[order[k - 1]])
         throw InputError(names[pieceOf[order[k]]] + ": particle id " + std::to_string(ids[order[k]]) + " of set '" +

@@ -42,8 +42,8 @@ TEST_F(DecomposeSettingsTest, ReadsEveryKeyWithDefaults) {
   EXPECT_EQ(d.subdomains, 4);
   EXPECT_EQ(d.method, PartitionMethod::RecursiveBisection);
   EXPECT_EQ(d.fluidWeight, 1.0);
-  EXPECT_EQ(d.porousWeight, 2.0);
-  EXPECT_EQ(d.boundaryWeight, 0.25);
+  EXPECT_EQ(d.porousWeight, 1.75);
+  EXPECT_EQ(d.boundaryWeight, 0.05);
   const DecomposeSettings e =
       read("numberOfSubdomains: 2\nmethod: hilbertCurve\nweights: {fluid: 1.5, porous: 3, boundary: 0.5}\n");
   EXPECT_EQ(e.method, PartitionMethod::HilbertCurve);

@@ -84,9 +84,9 @@ TEST(Decomposition, SplitsEverySetAndMergesBackByIdBitForBit) {
       }
       EXPECT_EQ(total, particles[s].size()) << particles[s].name();
     }
-    // Weights: fluid 1, porous 2, walls 0.25 per particle.
+    // Weights: fluid 1, porous 1.75, walls 0.05 per particle.
     const double weight = std::accumulate(d.summary.weights.begin(), d.summary.weights.end(), 0.0);
-    EXPECT_DOUBLE_EQ(weight, 700.0 + 2.0 * 300.0 + 0.25 * 400.0);
+    EXPECT_DOUBLE_EQ(weight, 700.0 + 1.75 * 300.0 + 0.05 * 400.0);
     EXPECT_LT(d.summary.imbalance, 2.0 / (weight / 3.0) * 2.0); // within two of the heaviest particles
 
     const ParticleSystem merged =
