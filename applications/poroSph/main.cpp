@@ -1,5 +1,6 @@
 /// poroSph: the porous-flow SPH solver. Reads a case, runs it to endTime, writes time directories.
 
+#include "ParallelRun.hpp"
 #include "core/Arguments.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
@@ -20,11 +21,15 @@ using namespace poro;
 int main(int argc, char* argv[]) try {
   const Arguments args(argc, argv, "poroSph",
                        "Implicit incompressible porous flow with SPH (Boettcher et al. 2025). Runs the case\n"
-                       "from its start time directory to endTime and writes time directories and case.pvd.");
+                       "from its start time directory to endTime and writes time directories and case.pvd.",
+                       {{"parallel", "",
+                         "run a decomposed case (decomposePar) on MPI ranks: mpirun -np N poroSph -parallel; each rank "
+                         "reads and writes processor<rank>/ (fluid and walls so far)"}});
   if (args.help()) {
     std::cout << args.usage();
     return 0;
   }
+  if (args.has("parallel")) return runParallel(args, argc, argv);
   const CaseLock lock(args.caseDir(), "poroSph"); // before readCase: its recovery deletes unfinished output
   SimulationCase simulation = readCase(args.caseDir(), args.threads());
   if (simulation.endTimeReached) {

@@ -72,8 +72,9 @@ template <class Relevant> void throwIfIncomplete(const fs::path& caseDir, const 
 
 } // namespace
 
-SimulationCase readCase(const fs::path& caseDir, int threads) {
+SimulationCase readCase(const fs::path& caseDir, int threads, const fs::path& timesDirOrEmpty) {
   if (!fs::is_directory(caseDir)) throw InputError(caseDir.string() + ": case directory not found");
+  const fs::path timesDir = timesDirOrEmpty.empty() ? caseDir : timesDirOrEmpty;
   const auto [control, output] = readControlDict(caseDir);
 
   const fs::path solverDictPath = caseDir / "system" / "solverDict";
@@ -91,31 +92,31 @@ SimulationCase readCase(const fs::path& caseDir, int threads) {
     Dictionary::read((caseDir / "system" / "controlDict").string()).fail(key, message); // for the line
   };
   std::string startName;
-  recoverInterruptedWrites(caseDir);
-  const auto times = listTimeDirectories(caseDir);
+  recoverInterruptedWrites(timesDir);
+  const auto times = listTimeDirectories(timesDir);
   std::string names;
   for (const auto& t : times) names += (names.empty() ? "" : ", ") + t.name;
   const auto sameTime = [](double a, double b) { return std::abs(a - b) <= 1e-10 * std::max(1.0, std::abs(b)); };
   if (control.startFrom == TimeControl::StartFrom::LatestTime) {
-    throwIfIncomplete(caseDir, [&](double t) { return times.empty() || t > times.back().time; });
-    if (times.empty()) throw InputError((caseDir / "0").string() + ": no time directory; run sampleParticles first");
+    throwIfIncomplete(timesDir, [&](double t) { return times.empty() || t > times.back().time; });
+    if (times.empty()) throw InputError((timesDir / "0").string() + ": no time directory; run sampleParticles first");
     startName = times.back().name;
   } else {
     for (const auto& t : times)
       if (sameTime(t.time, control.startTime)) startName = t.name;
-    throwIfIncomplete(caseDir, [&](double t) { return startName.empty() && sameTime(t, control.startTime); });
+    throwIfIncomplete(timesDir, [&](double t) { return startName.empty() && sameTime(t, control.startTime); });
     if (startName.empty())
       controlDictError("startTime", "no time directory " + timeName(control.startTime) +
                                         (times.empty() ? "; run sampleParticles first"
                                                        : "; the case has " + names + " (or use startFrom: latestTime)"));
   }
-  RunState start = readRunState(caseDir / startName);
-  checkSampledRegions(caseDir, caseDir / startName); // before reading what may be gigabytes of particles
+  RunState start = readRunState(timesDir / startName);
+  checkSampledRegions(caseDir, timesDir / startName); // before reading what may be gigabytes of particles
   // As OpenFOAM: a finished case run again (startFrom latestTime) reports that it is done; the caller exits 0
   // without the particles.
   const bool endTimeReached = control.endTimeReached(start.time);
   ParticleSystem particles =
-      endTimeReached ? ParticleSystem(radius) : readParticles(caseDir, startName, radius, materials);
+      endTimeReached ? ParticleSystem(radius) : readParticles(timesDir, startName, radius, materials);
   return SimulationCase{control,   output, solver, fluid, std::move(materials), startName, start, std::move(particles),
                         std::move(wallMotions), std::move(rigidBodies), endTimeReached};
 }

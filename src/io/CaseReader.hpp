@@ -33,8 +33,10 @@ struct SimulationCase {
   bool endTimeReached = false;
 };
 
-/// `threads` > 0 overrides solverDict's threads (-threads on the command line).
-SimulationCase readCase(const std::filesystem::path& caseDir, int threads = 0);
+/// `threads` > 0 overrides solverDict's threads (-threads on the command line). The time directories are those of
+/// `timesDir` when given (a subdomain's processor<N>/ in a parallel run), else the case's own.
+SimulationCase readCase(const std::filesystem::path& caseDir, int threads = 0,
+                        const std::filesystem::path& timesDir = {});
 
 /// particleRadius of system/particleDict (the one key the solver needs from it).
 double readParticleRadius(const std::filesystem::path& caseDir);

@@ -10,6 +10,10 @@ namespace poro::linalg {
 CgResult solveCg(const BlockOperator& a, const BlockDiagonal& inverseDiagonal, const BlockVector& b, const BlockVector& x,
                  const CgWork& work, const CgSettings& settings) {
   CgResult result;
+  const auto dot = [&](const BlockVector& u, const BlockVector& v) {
+    const double local = linalg::dot(u, v);
+    return settings.sumOverRanks ? settings.sumOverRanks(local) : local;
+  };
   const double normB = std::sqrt(dot(b, b));
   if (normB == 0.0) {
     for (const Vec3Span& part : x)

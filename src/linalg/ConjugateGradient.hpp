@@ -4,6 +4,8 @@
 
 #include "linalg/BlockVector.hpp"
 
+#include <functional>
+
 namespace poro::linalg {
 
 /// y = A x for a matrix-free operator; must overwrite y.
@@ -16,6 +18,8 @@ public:
 struct CgSettings {
   double tolerance = 1e-4; ///< relative residual ||b - A x|| <= tolerance ||b||
   int maxIterations = 100;
+  /// Completes a dot product over every rank of a parallel run (the vectors hold this rank's rows); serially none.
+  std::function<double(double)> sumOverRanks;
 };
 
 struct CgResult {

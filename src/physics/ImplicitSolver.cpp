@@ -34,7 +34,10 @@ void overwriteFixedRows(const StepContext& ctx, std::size_t part, std::size_t si
 class ImplicitSolver::Operator final : public linalg::BlockOperator {
 public:
   explicit Operator(const ImplicitSolver& solver) : solver_(solver) {}
-  void apply(const linalg::BlockVector& x, const linalg::BlockVector& y) const override { solver_.apply(x, y); }
+  void apply(const linalg::BlockVector& x, const linalg::BlockVector& y) const override {
+    solver_.ctx_->refreshGhosts({kUnknown, kP}); // CG applies the operator to these two only; the terms read neighbours
+    solver_.apply(x, y);
+  }
 
 private:
   const ImplicitSolver& solver_;
@@ -51,9 +54,9 @@ void ImplicitSolver::registerFields(ParticleSet& set) {
 
 linalg::BlockVector ImplicitSolver::view(const StepContext& ctx, const char* fieldName) {
   linalg::BlockVector v;
-  for (std::size_t a : ctx.dynamicSets) {
+  for (std::size_t a : ctx.dynamicSets) { // this rank's rows; the ghosts' entries follow in the storage
     auto& f = ctx.particles[a].vec3(fieldName);
-    v.push_back({f.data(), f.size()});
+    v.push_back({f.data(), ctx.owned(a)});
   }
   return v;
 }
@@ -141,7 +144,7 @@ linalg::CgResult ImplicitSolver::solve(const StepContext& ctx) {
   if (settings_.preconditioner) {
     for (std::size_t a : ctx.dynamicSets) {
       auto& f = ctx.particles[a].mat3(kInverseDiagonal);
-      inverse.push_back({f.data(), f.size()});
+      inverse.push_back({f.data(), ctx.owned(a)});
     }
     diagonal(inverse);
     for (const auto& part : inverse) {
@@ -150,7 +153,9 @@ linalg::CgResult ImplicitSolver::solve(const StepContext& ctx) {
     }
   }
   const linalg::CgWork work{view(ctx, kR), view(ctx, kZ), view(ctx, kP), view(ctx, kQ)};
-  result = linalg::solveCg(Operator(*this), inverse, b, u, work, {settings_.tolerance, settings_.maxIterations});
+  linalg::CgSettings cg{settings_.tolerance, settings_.maxIterations, {}};
+  if (ctx.ghosts) cg.sumOverRanks = [&ctx](double local) { return ctx.sumOverRanks(local); };
+  result = linalg::solveCg(Operator(*this), inverse, b, u, work, cg);
   if (collectWallReactions_) {
     for (std::size_t k : ctx.boundarySets) wallReactions_.emplace_back(ctx.particles[k].size(), Vec3::Zero());
     for (const ImplicitTerm* term : enabled_) term->addWallReactions(u, wallReactions_);

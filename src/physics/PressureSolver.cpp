@@ -158,7 +158,7 @@ void PressureSolver::computeAccelerations(const StepContext& ctx, const std::vec
                                     return p.coupling.coupling == 0.0 && p.coupling.ownCoupling == 0.0;
                                   }),
                    partners.end());
-    parallel::forEach(set.size(), [&](std::size_t i) {
+    parallel::forEach(ctx.owned(a), [&](std::size_t i) {
       if (fixed && fixed[i]) {
         accel[i].setZero();
         return;
@@ -187,6 +187,7 @@ void PressureSolver::computeAccelerations(const StepContext& ctx, const std::vec
       if (contact) accel[i] -= kappa[i] * wallGradient[i]; // WallContact.hpp
     });
   }
+  ctx.refreshGhosts({field::accelP}); // the sweeps read the neighbours' a^p
 }
 
 std::vector<std::vector<double>> PressureSolver::applyOperator(const StepContext& ctx) const {
@@ -235,6 +236,7 @@ void PressureSolver::warmStart(const StepContext& ctx) const {
     });
   }
   warmStartContactPressure(ctx, factor);
+  ctx.refreshGhosts({field::pi, field::contactPressure}); // rho* of a ghost near the halo's edge is not its owner's
 }
 
 PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<std::size_t>& sets) const {
@@ -262,7 +264,7 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
       const std::int64_t* fixed = fixedFlags(set);
       const double volume = set.particleVolume;
       const auto partners = partnersOf(ctx, a);
-      const std::size_t n = set.size();
+      const std::size_t n = ctx.owned(a); // a parallel run's ghosts get their pi from their owners below
       const bool contact = hasWallContact(set);
       double* kappa = contact ? set.real(field::contactPressure).data() : nullptr;
       const Vec3* wallGradient = contact ? set.vec3(field::wallGradient).data() : nullptr;
@@ -294,12 +296,13 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
         }
         return residual[i];
       });
-      const std::size_t active =
-          fixed ? parallel::sum<std::size_t>(n, [&](std::size_t i) -> std::size_t { return fixed[i] ? 0 : 1; }) : n;
-      const double mean = active > 0 ? errorSum / static_cast<double>(active) : 0.0;
+      const double active = ctx.sumOverRanks(static_cast<double>(
+          fixed ? parallel::sum<std::size_t>(n, [&](std::size_t i) -> std::size_t { return fixed[i] ? 0 : 1; }) : n));
+      const double mean = active > 0 ? ctx.sumOverRanks(errorSum) / active : 0.0;
       worstMean = std::max(worstMean, mean);
-      worstMax = std::max(worstMax, parallel::max(n, 0.0, [&](std::size_t i) { return residual[i]; }));
+      worstMax = std::max(worstMax, ctx.maxOverRanks(parallel::max(n, 0.0, [&](std::size_t i) { return residual[i]; })));
     }
+    ctx.refreshGhosts({field::pi, field::contactPressure});
     stats.iterations = it;
     stats.meanError = 100.0 * worstMean;
     stats.maxError = 100.0 * worstMax;

@@ -158,6 +158,7 @@ void Solver::checkStartPositions() {
 
 void Solver::checkStart() {
   if (state_.step == 0) checkStartDensity();
+  if (ghosts_) ghosts_->drop(particles_); // the start is written next: this rank's own particles
   startChecked_ = true;
 }
 
@@ -332,13 +333,26 @@ StepContext Solver::context(double deltaT) {
                      setMaterials_,
                      settings_.compatibility,
                      state_.lastDeltaT,
-                     poreFluidBias_ ? &*poreFluidBias_ : nullptr};
+                     poreFluidBias_ ? &*poreFluidBias_ : nullptr,
+                     ghosts_};
+}
+
+void Solver::attachGhosts(GhostExchange& ghosts) {
+  ghosts_ = &ghosts;
+  ghosts.update(particles_);
+  for (std::size_t k : boundarySets_) computeBoundaryVolumes(particles_[k], kernel_);
+  ghosts.drop(particles_);
 }
 
 void Solver::searchNeighbours(double deltaT) {
+  if (ghosts_) ghosts_->drop(particles_); // e.g. those of checkStart's densities
   const bool sortNow = settings_.sortInterval > 0 && state_.step % settings_.sortInterval == 0;
   if (sortNow) {
     for (std::size_t a : dynamicSets_) particles_[a].permute(search_.mortonOrder(particles_[a].x()));
+    search_.invalidate();
+  }
+  if (ghosts_) { // particles change ranks and ghosts come anew every step: the lists are searched afresh
+    ghosts_->update(particles_);
     search_.invalidate();
   }
   std::vector<const std::vector<Vec3>*> positions;
@@ -365,6 +379,7 @@ StepContext Solver::beginStep(double deltaT) {
     ScopedPhase phase(phases_, "densities");
     computeDensities(ctx, gradients_);
     initialiseWallContactLimits(ctx, flatWallShare_);
+    ctx.refreshGhosts(); // a ghost near the halo's edge misses neighbours: its owner's values are the right ones
   }
   return ctx;
 }
@@ -375,7 +390,9 @@ void Solver::step(double deltaT) {
   {
     ScopedPhase phase(phases_, "implicit"); // the non-pressure velocity updates: XSPH smoothing, then Eq. 22
     smoothFluidVelocities(ctx, settings_.xsph);
+    ctx.refreshGhosts({field::v});
     report_.implicit = implicit_.solve(ctx);
+    ctx.refreshGhosts({field::v, field::deltaV});
   }
   {
     ScopedPhase phase(phases_, "pressure");
@@ -396,6 +413,7 @@ void Solver::step(double deltaT) {
         if (!(fixed && fixed[i])) x[i] += deltaT * v[i];
       });
     }
+    if (ghosts_) ghosts_->drop(particles_); // what is written and checked is this rank's own
     state_.time += deltaT;
     ++state_.step;
     report_.deltaT = state_.lastDeltaT = deltaT;
@@ -420,14 +438,20 @@ void Solver::measureFluidDensity() {
           parallel::max(rho.size(), 0.0, [&](std::size_t i) { return solids.of(i).size() > 0 ? rho[i] : 0.0; }));
     }
   }
+  if (ghosts_) { // the log's figures are the run's
+    report_.maxFluidDensity = ghosts_->max(report_.maxFluidDensity);
+    report_.maxPoreFluidDensity = ghosts_->max(report_.maxPoreFluidDensity);
+  }
 }
 
 double Solver::maxSpeed() const {
   double result = 0.0;
   for (std::size_t s = 0; s < particles_.size(); ++s) {
     const auto& v = particles_[s].v();
-    result = std::max(result, parallel::max(v.size(), 0.0, [&](std::size_t i) { return v[i].norm(); }));
+    const std::size_t n = ghosts_ ? ghosts_->owned(s) : v.size();
+    result = std::max(result, parallel::max(n, 0.0, [&](std::size_t i) { return v[i].norm(); }));
   }
+  if (ghosts_) result = ghosts_->max(result); // every rank takes the same step
   // The walls' velocities above are those of the step just done; the next step must also respect how fast the
   // prescribed motions go within it (a wall that starts, or speeds up at a corner of its table): their largest
   // speed |d'| + |theta'| (largest distance from the axis) over the longest step that can come.

@@ -84,6 +84,10 @@ public:
   const TimeControl& timeControl() const { return control_; }
   /// Replaces the time settings while running (runTimeModifiable); the next step uses them.
   void setTimeControl(const TimeControl& control);
+  /// Makes this a rank of a parallel run (physics/GhostExchange.hpp): every step then starts by sending particles
+  /// that left this rank's part and fetching the ghosts, and ends by dropping them. The walls' volumes are computed
+  /// again here, with the ghost walls that a subdomain's edge needs.
+  void attachGhosts(GhostExchange& ghosts);
   /// Tests the health checks end to end: in step `step` one particle's velocity becomes NaN.
   void injectNaN(long long step) { injectNaNStep_ = step; }
 
@@ -145,6 +149,7 @@ private:
   std::size_t outsideReported_ = 0; ///< particles outside the domain already warned about (policy warn)
   long long lastWrittenStep_ = -1;
   bool startChecked_ = false; ///< checkStart() ran (main calls it before anything is written)
+  GhostExchange* ghosts_ = nullptr; ///< a parallel run's ranks (attachGhosts), else null
   long long injectNaNStep_ = -1;
 };
 

@@ -2,6 +2,7 @@
 /// What every part of one time step sees (STYLE.md §5: no globals; everything arrives through here).
 
 #include "physics/FluidProperties.hpp"
+#include "physics/GhostExchange.hpp"
 #include "physics/PorousMaterial.hpp"
 #include "physics/PoreFluidDensityBias.hpp"
 #include "physics/SolverSettings.hpp"
@@ -42,6 +43,16 @@ struct StepContext {
   CompatibilitySettings compatibility;          ///< METHOD.md §10 (defaults: the paper's behaviour)
   double previousDt = 0.0;                      ///< the step size of the step before [s], 0 before the first
   const PoreFluidDensityBias* poreFluidBias = nullptr; ///< pressure.poreFluidDensity latticeCorrected, else null
+  GhostExchange* ghosts = nullptr;                     ///< a parallel run's ranks, else null
+
+  /// Particles of set a this rank computes: all of them in a serial run.
+  std::size_t owned(std::size_t a) const { return ghosts ? ghosts->owned(a) : particles[a].size(); }
+  /// Ghosts get their owners' `names` fields (every field when empty); nothing in a serial run.
+  void refreshGhosts(const std::vector<std::string>& names = {}) const {
+    if (ghosts) ghosts->refresh(particles, names);
+  }
+  double sumOverRanks(double value) const { return ghosts ? ghosts->sum(value) : value; }
+  double maxOverRanks(double value) const { return ghosts ? ghosts->max(value) : value; }
 };
 
 } // namespace poro

@@ -42,6 +42,16 @@ std::size_t bytesPerParticle(const ParticleSet& set, const std::vector<std::stri
   return bytes;
 }
 
+/// The fields of `names` that `set` has (all of its fields when `names` is empty): sets differ (a fluid set has no
+/// contact pressure), and every rank's set of one name has the same fields.
+std::vector<std::string> fieldsOf(const ParticleSet& set, const std::vector<std::string>& names) {
+  if (names.empty()) return set.fieldNames();
+  std::vector<std::string> present;
+  for (const std::string& name : names)
+    if (set.has(name)) present.push_back(name);
+  return present;
+}
+
 } // namespace
 
 std::size_t HaloExchange::ghosts(std::size_t set) const {
@@ -55,24 +65,28 @@ std::size_t HaloExchange::lent(std::size_t set) const {
   return n;
 }
 
-void HaloExchange::dropGhosts(ParticleSystem& particles) const {
+void HaloExchange::dropGhosts(ParticleSystem& particles) {
+  if (!holdsGhosts_) return; // particles may have changed ranks since: owned_ is not their count any more
   for (std::size_t s = 0; s < owned_.size() && s < particles.size(); ++s) particles[s].resize(owned_[s]);
+  holdsGhosts_ = false;
 }
 
 std::vector<std::vector<char>> HaloExchange::pack(const ParticleSystem& particles,
                                                   const std::vector<std::string>& names, bool withCounts) const {
   const std::size_t ranks = lent_.empty() ? 0 : lent_.front().size();
+  // Pack and unpack name the same fields on every rank: fieldsOf() depends on the set's registry only.
   std::vector<std::vector<char>> messages(ranks);
   for (std::size_t q = 0; q < ranks; ++q) {
     bool any = false;
     for (std::size_t s = 0; s < particles.size(); ++s) any = any || !lent_[s][q].empty();
     if (!any) continue; // no message: the receiver reads an empty one as no ghosts from here
     for (std::size_t s = 0; s < particles.size(); ++s) {
+      const std::vector<std::string> fields = fieldsOf(particles[s], names);
       if (withCounts) {
         putCount(messages[q], lent_[s][q].size());
-        putCount(messages[q], bytesPerParticle(particles[s], names));
+        putCount(messages[q], bytesPerParticle(particles[s], fields));
       }
-      particles[s].pack(lent_[s][q], names, messages[q]);
+      particles[s].pack(lent_[s][q], fields, messages[q]);
     }
   }
   return messages;
@@ -80,6 +94,7 @@ std::vector<std::vector<char>> HaloExchange::pack(const ParticleSystem& particle
 
 void HaloExchange::build(ParticleSystem& particles, double reach, const Communicator& comm) {
   dropGhosts(particles);
+  holdsGhosts_ = true;
   const std::size_t ranks = static_cast<std::size_t>(comm.size());
   owned_.assign(particles.size(), 0);
   std::vector<const std::vector<Vec3>*> positions;
@@ -124,8 +139,9 @@ void HaloExchange::refresh(ParticleSystem& particles, const std::vector<std::str
       const std::size_t count = received_[s][q];
       if (count > 0) {
         std::size_t at = 0; // this set's data in q's message: after the earlier sets'
-        for (std::size_t t = 0; t < s; ++t) at += received_[t][q] * bytesPerParticle(particles[t], names);
-        particles[s].unpack(received[q].data() + at, count, first, names);
+        for (std::size_t t = 0; t < s; ++t)
+          at += received_[t][q] * bytesPerParticle(particles[t], fieldsOf(particles[t], names));
+        particles[s].unpack(received[q].data() + at, count, first, fieldsOf(particles[s], names));
       }
       first += count;
     }

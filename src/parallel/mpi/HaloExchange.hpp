@@ -21,8 +21,8 @@ public:
   void build(ParticleSystem& particles, double reach, const Communicator& comm);
   /// Copies the fields `names` (all fields when empty) of the lent particles into their ghosts on every rank.
   void refresh(ParticleSystem& particles, const std::vector<std::string>& names, const Communicator& comm) const;
-  /// Removes the ghosts (before migration, output or a rebuild).
-  void dropGhosts(ParticleSystem& particles) const;
+  /// Removes the ghosts of the last build, once (before migration, output or a rebuild); then nothing until the next.
+  void dropGhosts(ParticleSystem& particles);
 
   /// Set s holds its own particles in slots [0, owned(s)) and ghosts in [owned(s), owned(s) + ghosts(s)).
   std::size_t owned(std::size_t set) const { return owned_.at(set); }
@@ -38,6 +38,7 @@ private:
   std::vector<std::size_t> owned_;                    ///< per set
   std::vector<std::vector<std::vector<Index>>> lent_; ///< [set][rank]: slots lent to that rank
   std::vector<std::vector<std::size_t>> received_;    ///< [set][rank]: ghosts from that rank
+  bool holdsGhosts_ = false;                          ///< the sets hold this build's ghosts
 };
 
 } // namespace poro

@@ -1,0 +1,105 @@
+#include "ParallelRun.hpp"
+
+#include "core/Error.hpp"
+#include "core/Log.hpp"
+#include "core/Parallel.hpp"
+#include "io/CaseLock.hpp"
+#include "io/CaseReader.hpp"
+#include "io/ProcessorDirectories.hpp"
+#include "io/SolverPerformanceLog.hpp"
+#include "io/TimeDirectory.hpp"
+#include "parallel/DecomposeSettings.hpp"
+#include "parallel/mpi/Migration.hpp"
+#include "parallel/mpi/RankGhosts.hpp"
+
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace poro {
+
+namespace {
+
+/// What the parallel run does not do yet, refused by name rather than run wrong.
+void refuseUnsupported(const SimulationCase& simulation) {
+  for (std::size_t s = 0; s < simulation.particles.size(); ++s)
+    if (simulation.particles[s].kind() == SetKind::Porous)
+      throw InputError("poroSph -parallel: the case has porous particles (set '" + simulation.particles[s].name() +
+                       "'); decomposed runs handle fluid and walls so far. Run it serially "
+                       "(reconstructPar, then poroSph without -parallel)");
+  if (!simulation.rigidBodies.empty())
+    throw InputError("poroSph -parallel: the case has rigid bodies; decomposed runs handle fluid and walls so far. "
+                     "Run it serially (reconstructPar, then poroSph without -parallel)");
+}
+
+/// The partition of the particles of every rank, by decomposeParDict's method and weights: decomposePar's cut of the
+/// same particles, so nothing moves at the start.
+Partition partitionOf(const ParticleSystem& particles, const DecomposeSettings& settings, const Communicator& comm) {
+  std::vector<Vec3> points;
+  std::vector<double> weights;
+  for (std::size_t s = 0; s < particles.size(); ++s) {
+    const ParticleSet& set = particles[s];
+    const double w = set.kind() == SetKind::Fluid    ? settings.fluidWeight
+                     : set.kind() == SetKind::Porous ? settings.porousWeight
+                                                     : settings.boundaryWeight;
+    points.insert(points.end(), set.x().begin(), set.x().end());
+    weights.insert(weights.end(), set.size(), w);
+  }
+  return Partition::build(points, weights, comm.size(), settings.method, reductionsOver(comm));
+}
+
+int runRank(const Arguments& args, const Communicator& comm) {
+  const fs::path caseDir = args.caseDir();
+  const std::vector<fs::path> processors = listProcessorDirectories(caseDir);
+  if (processors.size() != static_cast<std::size_t>(comm.size()))
+    throw InputError(caseDir.string() + ": " + std::to_string(processors.size()) + " processor directories for " +
+                     std::to_string(comm.size()) + " ranks; run mpirun -np " + std::to_string(processors.size()) +
+                     " (or decomposePar -force for " + std::to_string(comm.size()) + " subdomains)");
+  const fs::path mine = processors[static_cast<std::size_t>(comm.rank())];
+  const CaseLock lock(mine.string(), "poroSph");
+  SimulationCase simulation = readCase(caseDir, args.threads(), mine);
+  if (simulation.endTimeReached) {
+    log::info("Case: " + caseDir.string() + "\nThe start time directory " + simulation.startName +
+              " has reached endTime: nothing to run.\nEnd");
+    return 0;
+  }
+  refuseUnsupported(simulation);
+  const DecomposeSettings settings = readDecomposeSettings(caseDir);
+  std::ostringstream banner;
+  banner << "Case: " << caseDir.string() << " (parallel, " << comm.size() << " ranks)\nStarting from time "
+         << simulation.startName << " with " << comm.sum(static_cast<long long>(simulation.particles.particleCount()))
+         << " particles";
+  log::info(banner.str());
+  RankGhosts ghosts(comm, partitionOf(simulation.particles, settings, comm), simulation.particles.supportRadius());
+  const bool movingWalls = !simulation.wallMotions.empty();
+  Solver solver(std::move(simulation.particles), simulation.fluid, std::move(simulation.materials), simulation.solver,
+                simulation.control, simulation.start, std::move(simulation.wallMotions),
+                std::move(simulation.rigidBodies));
+  solver.attachGhosts(ghosts);
+  log::info("Threads per rank: " + std::to_string(parallel::threads()));
+  solver.checkStart();
+  TimeWriter writer(mine, simulation.output, simulation.startName);
+  writer.setMovingWalls(movingWalls);
+  SolverPerformanceLog performance(mine, simulation.startName);
+  solver.run([&](const Solver& s) { writer.write(s.particles(), s.state()); }, {},
+             [&](const Solver& s) { performance.record(s); });
+  return 0;
+}
+
+} // namespace
+
+int runParallel(const Arguments& args, int& argc, char**& argv) {
+  Communicator comm(argc, argv);
+  log::setQuiet(comm.rank() != 0); // one log, rank 0's; errors are printed by the rank that meets them
+  try {
+    return runRank(args, comm);
+  } catch (const Error& e) {
+    log::fatal(e);
+  } catch (const std::exception& e) {
+    log::fatal(e.what());
+  }
+  // The other ranks wait in a collective this rank will not reach: stop them all.
+  comm.abort(1);
+}
+
+} // namespace poro

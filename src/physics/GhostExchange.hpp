@@ -1,0 +1,33 @@
+#pragma once
+/// The seam between a time step and the ranks of a parallel run (ARCHITECTURE.md "Decomposed runs"). A serial run
+/// has none. In a parallel run each set holds this rank's own particles first, then ghosts: copies of other ranks'
+/// particles within reach, which the neighbour search sees as ordinary particles. The step computes its own
+/// particles, refreshes the ghosts at the fixed points where a later loop reads a neighbour's new value, and reduces
+/// what is global. Physics terms stay unaware of ranks (src/parallel/mpi implements this).
+
+#include "sph/ParticleSystem.hpp"
+
+#include <string>
+#include <vector>
+
+namespace poro {
+
+class GhostExchange {
+public:
+  virtual ~GhostExchange() = default;
+  /// Sends each own particle whose position another rank now owns there, then fetches the ghosts anew.
+  virtual void update(ParticleSystem& particles) = 0;
+  /// Removes the ghosts: the sets hold this rank's own particles only (output, health checks, the next update).
+  virtual void drop(ParticleSystem& particles) = 0;
+  /// Set s's own particles are slots [0, owned(s)); the ghosts follow (after update, until drop).
+  virtual std::size_t owned(std::size_t set) const = 0;
+  /// Copies the fields `names` (every field when empty) of the own particles into their ghosts on other ranks.
+  virtual void refresh(ParticleSystem& particles, const std::vector<std::string>& names) const = 0;
+  /// Over every rank.
+  virtual double sum(double value) const = 0;
+  virtual double max(double value) const = 0;
+  virtual int rank() const = 0;
+  virtual int ranks() const = 0;
+};
+
+} // namespace poro
