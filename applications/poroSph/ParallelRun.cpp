@@ -3,6 +3,7 @@
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "core/Parallel.hpp"
+#include "core/StopSignals.hpp"
 #include "io/CaseLock.hpp"
 #include "io/CaseReader.hpp"
 #include "io/ProcessorDirectories.hpp"
@@ -12,6 +13,8 @@
 #include "parallel/mpi/Migration.hpp"
 #include "parallel/mpi/RankGhosts.hpp"
 
+#include <cstdlib>
+#include <fstream>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -19,6 +22,14 @@ namespace fs = std::filesystem;
 namespace poro {
 
 namespace {
+
+std::string readText(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError(file.string() + ": cannot be read");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
 
 /// What the parallel run does not do yet, refused by name rather than run wrong.
 void refuseUnsupported(const SimulationCase& simulation) {
@@ -70,7 +81,15 @@ int runRank(const Arguments& args, const Communicator& comm) {
          << simulation.startName << " with " << comm.sum(static_cast<long long>(simulation.particles.particleCount()))
          << " particles";
   log::info(banner.str());
-  RankGhosts ghosts(comm, partitionOf(simulation.particles, settings, comm), simulation.particles.supportRadius());
+  // A restart cuts as the run it continues (the partition is written with every time), so it continues bit for bit.
+  const fs::path saved = mine / simulation.startName / "uniform" / "partition";
+  Partition partition = fs::exists(saved) ? Partition::parse(readText(saved), saved.string())
+                                          : partitionOf(simulation.particles, settings, comm);
+  if (partition.parts() != comm.size())
+    throw InputError(saved.string() + ": a partition into " + std::to_string(partition.parts()) + " parts for " +
+                     std::to_string(comm.size()) + " ranks");
+  const std::string partitionText = partition.text();
+  RankGhosts ghosts(comm, std::move(partition), simulation.particles.supportRadius());
   const bool movingWalls = !simulation.wallMotions.empty();
   Solver solver(std::move(simulation.particles), simulation.fluid, std::move(simulation.materials), simulation.solver,
                 simulation.control, simulation.start, std::move(simulation.wallMotions),
@@ -78,12 +97,16 @@ int runRank(const Arguments& args, const Communicator& comm) {
   solver.attachGhosts(ghosts);
   log::info("Threads per rank: " + std::to_string(parallel::threads()));
   solver.checkStart();
+  if (const char* step = std::getenv("POROSPH_INJECT_NAN_STEP"); step && comm.rank() == 0) // tests the health checks
+    solver.injectNaN(std::atoll(step));
   TimeWriter writer(mine, simulation.output, simulation.startName);
   writer.setMovingWalls(movingWalls);
+  writer.addUniformFile("partition", partitionText);
   SolverPerformanceLog performance(mine, simulation.startName);
-  solver.run([&](const Solver& s) { writer.write(s.particles(), s.state()); }, {},
+  signals::installStopHandlers(); // kill -TERM on the ranks: every rank stops after the same step and writes it
+  const RunOutcome outcome = solver.run([&](const Solver& s) { writer.write(s.particles(), s.state()); }, {},
              [&](const Solver& s) { performance.record(s); });
-  return 0;
+  return outcome.end == RunOutcome::End::Signal ? 1 : 0;
 }
 
 } // namespace

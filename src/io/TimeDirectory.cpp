@@ -450,6 +450,7 @@ void TimeWriter::write(const ParticleSystem& particles, const RunState& state) {
     parts = writeSets(dir, particles, withBoundaries, settings_.binary);
     writeRunState(dir, state, particles.particleRadius());
     writeSamplingRecord(dir, samplingRecord_);
+    for (const auto& [file, text] : uniformFiles_) writeFileAtomically(dir / "uniform" / file, text);
   });
   appendRigidBodyRows(caseDir_, state);
   // A rewritten directory (a run again from 0 replaces 0/) has lost the surfaces fluidSurface added to the old one.

@@ -1,6 +1,10 @@
 #include "parallel/Partition.hpp"
 
+#include "core/Error.hpp"
+
 #include <algorithm>
+#include <cstdio>
+#include <sstream>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -227,6 +231,71 @@ int Partition::ownerOf(const Vec3& x) const {
   while (nodes_[n].axis >= 0) n = static_cast<std::size_t>(x[nodes_[n].axis] < nodes_[n].cut ? nodes_[n].left
                                                                                                 : nodes_[n].right);
   return nodes_[n].part;
+}
+
+namespace {
+std::string exact(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", value);
+  return buffer;
+}
+} // namespace
+
+std::string Partition::text() const {
+  std::ostringstream out;
+  out << "# The partition of this parallel run (parallel/Partition.hpp): a restart cuts the same way.\n"
+      << toString(method_) << " " << parts_ << "\n";
+  if (method_ == PartitionMethod::RecursiveBisection) {
+    out << nodes_.size() << "\n";
+    for (const Node& n : nodes_)
+      out << n.axis << " " << exact(n.cut) << " " << n.left << " " << n.right << " " << n.part << "\n";
+  } else {
+    out << exact(origin_.x()) << " " << exact(origin_.y()) << " " << exact(origin_.z()) << " " << exact(cellSize_)
+        << "\n"
+        << firstKey_.size() << "\n";
+    for (const std::uint64_t key : firstKey_) out << key << "\n";
+  }
+  return out.str();
+}
+
+Partition Partition::parse(const std::string& text, const std::string& file) {
+  std::istringstream in(text);
+  std::string line;
+  while (in.peek() == '#') std::getline(in, line);
+  const auto fail = [&](const std::string& what) {
+    throw InputError(file + ": " + what + "; the file is damaged. Restart from a reconstructed time instead "
+                                          "(reconstructPar, then decomposePar -force)");
+  };
+  Partition p;
+  std::string method;
+  std::size_t count = 0;
+  if (!(in >> method >> p.parts_) || p.parts_ < 1) fail("no method and part count");
+  if (method != "recursiveBisection" && method != "hilbertCurve") fail("unknown method '" + method + "'");
+  p.method_ = partitionMethodFromName(method);
+  if (p.method_ == PartitionMethod::RecursiveBisection) {
+    if (!(in >> count) || count == 0) fail("no cut tree");
+    p.nodes_.resize(count);
+    for (Node& n : p.nodes_)
+      if (!(in >> n.axis >> n.cut >> n.left >> n.right >> n.part)) fail("a node of the cut tree is cut short");
+    for (std::size_t k = 0; k < count; ++k) { // children come after their parent: the walk down always ends
+      const Node& n = p.nodes_[k];
+      if (n.axis > 2 || (n.axis >= 0 && (n.left <= static_cast<int>(k) || n.right <= static_cast<int>(k) ||
+                                         static_cast<std::size_t>(n.left) >= count ||
+                                         static_cast<std::size_t>(n.right) >= count)))
+        fail("node " + std::to_string(k) + " of the cut tree points outside it");
+      if (n.axis < 0 && (n.part < 0 || n.part >= p.parts_)) fail("a part number out of range");
+    }
+  } else {
+    double x = 0, y = 0, z = 0;
+    if (!(in >> x >> y >> z >> p.cellSize_ >> count) || !(p.cellSize_ > 0.0) ||
+        count != static_cast<std::size_t>(p.parts_))
+      fail("no grid or no cut per part");
+    p.origin_ = Vec3(x, y, z);
+    p.firstKey_.resize(count);
+    for (std::uint64_t& key : p.firstKey_)
+      if (!(in >> key)) fail("a cut of the curve is missing");
+  }
+  return p;
 }
 
 std::vector<int> Partition::owners(const std::vector<Vec3>& x) const {

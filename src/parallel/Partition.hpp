@@ -44,6 +44,10 @@ public:
                          PartitionMethod method, const Reductions& reductions = {});
 
   int parts() const { return parts_; }
+  /// The cuts as text, every number exact, and back: a parallel run writes them with each time directory, so a
+  /// restart cuts as the run it continues (parse's errors name `file`).
+  std::string text() const;
+  static Partition parse(const std::string& text, const std::string& file);
   /// The part whose region holds x (any x: the regions tile space).
   int ownerOf(const Vec3& x) const;
   std::vector<int> owners(const std::vector<Vec3>& x) const;

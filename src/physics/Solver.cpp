@@ -511,6 +511,7 @@ void Solver::stopAfterWriting(const Writer& write, const std::string& message) {
   out << message << "\nThe state at time " << std::setprecision(10) << state_.time << " (step " << state_.step
       << ") is " << (lastWrittenStep_ == state_.step ? "already on disk" : "written") << " as a time directory.";
   if (lastWrittenStep_ != state_.step) writeState(write);
+  if (ghosts_) ghosts_->sum(0.0); // every rank has written its part before any of them stops the run
   throw NumericalError(out.str());
 }
 
@@ -538,7 +539,9 @@ std::string Solver::describeDomain() const {
 void Solver::checkHealth(const Writer& write) {
   const HealthSettings& health = settings_.health;
   const auto notFinite = findNonFinite(particles_, dynamicSets_);
-  if (!notFinite.empty()) {
+  // In a parallel run every rank takes the decision of the worst one, so that they stop (or go on) together.
+  const auto anyRank = [&](bool here) { return ghosts_ ? ghosts_->max(here ? 1.0 : 0.0) > 0.0 : here; };
+  if (anyRank(!notFinite.empty())) {
     std::ostringstream msg;
     msg << std::setprecision(10) << "step " << state_.step << " (time " << state_.time << " s, deltaT "
         << report_.deltaT << " s): NaN or infinite position or velocity in "
@@ -547,7 +550,7 @@ void Solver::checkHealth(const Writer& write) {
                       const auto p = snapshot_.positionOf(s, particles_[s].integer(field::id)[i]);
                       return p ? *p : particles_[s].x()[i];
                     })
-        << " (positions at the start of the step)";
+        << " (positions at the start of the step)" << (notFinite.empty() ? " on another rank" : "");
     if (health.nonFinite == HealthAction::Remove) {
       removeParticles(particles_, notFinite);
       log::warning(msg.str() + "; removed (health.nonFinite remove in system/solverDict). If this recurs, " +
@@ -562,10 +565,12 @@ void Solver::checkHealth(const Writer& write) {
   if (domain_) {
     const auto outside = findOutside(particles_, dynamicSets_, *domain_);
     const std::size_t n = count(outside);
-    if (n > 0 && (health.leavingDomain != HealthAction::Warn || n > outsideReported_)) {
+    const bool stopAll = health.leavingDomain == HealthAction::Stop && anyRank(n > 0);
+    if (stopAll || (n > 0 && (health.leavingDomain != HealthAction::Warn || n > outsideReported_))) {
       std::ostringstream msg;
       msg << std::setprecision(6) << "step " << state_.step << " (time " << state_.time << " s): "
-          << describe(particles_, outside, [&](std::size_t s, std::size_t i) { return particles_[s].x()[i]; })
+          << (n == 0 ? std::string("particles of another rank")
+                     : describe(particles_, outside, [&](std::size_t s, std::size_t i) { return particles_[s].x()[i]; }))
           << " left the domain " << describeDomain()
           << ". Particles escape through gaps in the walls wider than a particle diameter or are thrown out by a "
              "pressure spike ("
@@ -667,7 +672,8 @@ RunOutcome Solver::run(const Writer& write, const Monitor& afterStep, const Obse
     }
     if (afterStep) afterStep(*this);
     const bool last = control_.endTimeReached(state_.time);
-    const int signal = signals::stopRequested();
+    int signal = signals::stopRequested();
+    if (ghosts_) signal = static_cast<int>(ghosts_->max(signal)); // every rank stops after the same step
     const bool writeTime = isWriteStep(previousTime);
     const StopAt stopAt = control_.stopAt;
     const bool skipWrite = stopAt == StopAt::NoWriteNow && !signal;
