@@ -93,8 +93,7 @@ int runRank(const Arguments& args, const Communicator& comm) {
   const bool movingWalls = !simulation.wallMotions.empty();
   Solver solver(std::move(simulation.particles), simulation.fluid, std::move(simulation.materials), simulation.solver,
                 simulation.control, simulation.start, std::move(simulation.wallMotions),
-                std::move(simulation.rigidBodies));
-  solver.attachGhosts(ghosts);
+                std::move(simulation.rigidBodies), &ghosts);
   log::info("Threads per rank: " + std::to_string(parallel::threads()));
   solver.checkStart();
   if (const char* step = std::getenv("POROSPH_INJECT_NAN_STEP"); step && comm.rank() == 0) // tests the health checks

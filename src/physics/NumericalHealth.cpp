@@ -44,23 +44,23 @@ std::size_t count(const std::vector<Offenders>& offenders) {
 }
 
 std::optional<Domain> wallDomain(const ParticleSystem& particles, const std::vector<std::size_t>& boundarySets,
-                                 const std::vector<Domain>& swept) {
-  std::optional<Domain> box;
-  const auto add = [&](const Vec3& lo, const Vec3& hi) {
-    if (!box) box = Domain{lo, hi};
-    box->min = box->min.cwiseMin(lo);
-    box->max = box->max.cwiseMax(hi);
-  };
+                                 const std::vector<Domain>& swept,
+                                 const std::function<void(Vec3& lo, Vec3& hi)>& overRanks) {
+  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
   for (std::size_t s : boundarySets)
-    for (const Vec3& p : particles[s].x()) add(p, p);
-  if (!box) return box;
-  for (const Domain& d : swept) add(d.min, d.max);
-  if (box) {
-    const double grow = (box->max - box->min).maxCoeff();
-    box->min.array() -= grow;
-    box->max.array() += grow;
-  }
-  return box;
+    for (const Vec3& p : particles[s].x()) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+  if (lo.x() <= hi.x())
+    for (const Domain& d : swept) {
+      lo = lo.cwiseMin(d.min);
+      hi = hi.cwiseMax(d.max);
+    }
+  if (overRanks) overRanks(lo, hi);
+  if (!(lo.x() <= hi.x())) return std::nullopt;
+  const double grow = (hi - lo).maxCoeff();
+  return Domain{(lo.array() - grow).matrix(), (hi.array() + grow).matrix()};
 }
 
 std::string describe(const ParticleSystem& particles, const std::vector<Offenders>& offenders,

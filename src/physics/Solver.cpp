@@ -57,12 +57,14 @@ std::string formatDuration(double seconds) {
 
 Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vector<PorousMaterial> materials,
                const SolverSettings& settings, const TimeControl& control, const RunState& start,
-               std::vector<ObjectMotion> wallMotions, std::vector<RigidBody::Spec> rigidBodies)
+               std::vector<ObjectMotion> wallMotions, std::vector<RigidBody::Spec> rigidBodies,
+               GhostExchange* ghosts)
     : particles_(std::move(particles)), fluid_(fluid), materials_(std::move(materials)), settings_(settings),
       control_(control), state_(start), kernel_(particles_.supportRadius()),
       search_(particles_.supportRadius(), settings.searchSkin * particles_.supportRadius()),
       implicit_(settings.implicit, makeImplicitTerms()), pressure_(settings.pressure),
       wallMotions_(std::move(wallMotions)), flatWallShare_(flatWallShare(kernel_, particles_.spacing())) {
+  ghosts_ = ghosts;
   hasRigidBodies_ = !rigidBodies.empty();
   if (settings_.threads > 0) parallel::setThreads(settings_.threads);
   const double volume = particles_.particleVolume();
@@ -116,6 +118,10 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
         reach = std::max(reach, m.motion.distanceFromAxis(rest[i]));
       }
     }
+    if (ghosts_) { // the body's particles are spread over the ranks
+      n = static_cast<std::size_t>(ghosts_->sum(static_cast<double>(n)));
+      reach = ghosts_->max(reach);
+    }
     wallReach_.push_back(reach);
     if (n == 0)
       throw InputError(m.where + ": region '" + m.region + "' has a motion, but the walls of the start time " +
@@ -125,8 +131,16 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
   setUpRigidBodies(std::move(rigidBodies));
   implicit_.collectWallReactions(!rigidBodies_.empty());
   placeWalls(state_.time, state_.nextDeltaT);
-  domain_ =
-      settings_.health.domain ? settings_.health.domain : wallDomain(particles_, boundarySets_, sweptByRotatingWalls());
+  if (ghosts_) computeWallVolumesWithGhosts();
+  const auto overRanks = [this](Vec3& lo, Vec3& hi) {
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = -ghosts_->max(-lo[a]);
+      hi[a] = ghosts_->max(hi[a]);
+    }
+  };
+  domain_ = settings_.health.domain ? settings_.health.domain
+                                    : wallDomain(particles_, boundarySets_, sweptByRotatingWalls(),
+                                                 ghosts_ ? std::function<void(Vec3&, Vec3&)>(overRanks) : nullptr);
   checkStartPositions();
 }
 
@@ -337,10 +351,18 @@ StepContext Solver::context(double deltaT) {
                      ghosts_};
 }
 
-void Solver::attachGhosts(GhostExchange& ghosts) {
-  ghosts_ = &ghosts;
+void Solver::computeWallVolumesWithGhosts() {
+  GhostExchange& ghosts = *ghosts_;
   ghosts.update(particles_);
-  for (std::size_t k : boundarySets_) computeBoundaryVolumes(particles_[k], kernel_);
+  // As setUpBoundarySet computes them: moving walls at their rest positions (a body's own neighbours are the same
+  // there as where it stands now), now with the ghost walls a subdomain's edge needs.
+  for (std::size_t k : boundarySets_) {
+    ParticleSet& set = particles_[k];
+    const bool moving = set.has(field::restPosition);
+    if (moving) std::swap(set.x(), set.vec3(field::restPosition));
+    computeBoundaryVolumes(set, kernel_);
+    if (moving) std::swap(set.x(), set.vec3(field::restPosition));
+  }
   ghosts.drop(particles_);
 }
 

@@ -48,9 +48,13 @@ public:
   /// outside the domain (health.domain, or the walls' box grown) unless health.leavingDomain is warn.
   /// Rigid bodies (physics/RigidBody.hpp) are the boundary particles of their object id; their state comes from
   /// `start.rigidBodies` (a restart) or, when that is empty, from the sampled particles at rest.
+  /// With `ghosts` the solver is one rank of a parallel run (physics/GhostExchange.hpp): every step then starts by
+  /// sending particles that left this rank's part and fetching the ghosts, and ends by dropping them; what the
+  /// constructor checks and derives from all particles (wall motions, the walls' volumes, the domain) is the run's.
   Solver(ParticleSystem particles, const FluidProperties& fluid, std::vector<PorousMaterial> materials,
          const SolverSettings& settings, const TimeControl& control, const RunState& start,
-         std::vector<ObjectMotion> wallMotions = {}, std::vector<RigidBody::Spec> rigidBodies = {});
+         std::vector<ObjectMotion> wallMotions = {}, std::vector<RigidBody::Spec> rigidBodies = {},
+         GhostExchange* ghosts = nullptr);
 
   /// Called at each write time and at the end; receives the solver to read particles and state from.
   using Writer = std::function<void(const Solver&)>;
@@ -84,10 +88,6 @@ public:
   const TimeControl& timeControl() const { return control_; }
   /// Replaces the time settings while running (runTimeModifiable); the next step uses them.
   void setTimeControl(const TimeControl& control);
-  /// Makes this a rank of a parallel run (physics/GhostExchange.hpp): every step then starts by sending particles
-  /// that left this rank's part and fetching the ghosts, and ends by dropping them. The walls' volumes are computed
-  /// again here, with the ghost walls that a subdomain's edge needs.
-  void attachGhosts(GhostExchange& ghosts);
   /// Tests the health checks end to end: in step `step` one particle's velocity becomes NaN.
   void injectNaN(long long step) { injectNaNStep_ = step; }
 
@@ -114,6 +114,8 @@ private:
 
   void setUpPorousSet(ParticleSet& set, const PorousMaterial& material);
   void setUpBoundarySet(ParticleSet& set);
+  /// A parallel run: the walls' volumes again, with the ghost walls a subdomain's edge needs.
+  void computeWallVolumesWithGhosts();
   /// Moving walls to x(t) = c0 + d(t) + R(t) (X - c0), with the velocity that carries them to x(t + deltaT).
   void placeWalls(double t, double deltaT);
   /// Builds the rigid bodies from their particles' rest positions and their state (start or restart).
@@ -149,7 +151,7 @@ private:
   std::size_t outsideReported_ = 0; ///< particles outside the domain already warned about (policy warn)
   long long lastWrittenStep_ = -1;
   bool startChecked_ = false; ///< checkStart() ran (main calls it before anything is written)
-  GhostExchange* ghosts_ = nullptr; ///< a parallel run's ranks (attachGhosts), else null
+  GhostExchange* ghosts_ = nullptr; ///< a parallel run's ranks, else null
   long long injectNaNStep_ = -1;
 };
 
