@@ -103,7 +103,12 @@ int runRank(const Arguments& args, const Communicator& comm) {
   writer.addUniformFile("partition", partitionText);
   SolverPerformanceLog performance(mine, simulation.startName);
   signals::installStopHandlers(); // kill -TERM on the ranks: every rank stops after the same step and writes it
-  const RunOutcome outcome = solver.run([&](const Solver& s) { writer.write(s.particles(), s.state()); }, {},
+  const auto write = [&](const Solver& s) {
+    writer.write(s.particles(), s.state());
+    comm.barrier(); // every piece of this time is on disk: rank 0 lists them all for ParaView
+    if (comm.rank() == 0) seriesOfSubdomains(processors).write(caseDir / "case.pvd");
+  };
+  const RunOutcome outcome = solver.run(write, {},
              [&](const Solver& s) { performance.record(s); });
   return outcome.end == RunOutcome::End::Signal ? 1 : 0;
 }

@@ -46,6 +46,16 @@ void requireTimeInEvery(const std::vector<fs::path>& processors, const std::stri
 
 } // namespace
 
+PvdSeries seriesOfSubdomains(const std::vector<fs::path>& processors) {
+  PvdSeries all;
+  for (const fs::path& processor : processors) {
+    const std::string name = processor.filename().string();
+    const PvdSeries own = seriesOfTimeDirectories(processor);
+    for (const PvdSeries::Entry& e : own.entries()) all.add(e.time, e.part + "." + name, name + "/" + e.file);
+  }
+  return all;
+}
+
 ParticleSystem readDecomposedParticles(const std::vector<fs::path>& processors, const std::string& time,
                                        double particleRadius, const std::vector<PorousMaterial>& materials) {
   requireTimeInEvery(processors, time);

@@ -3,6 +3,7 @@
 /// out like a case's time directories (`processor<N>/<t>/fluid.vtp`, ...), written by decomposePar and a parallel run
 /// and merged back by reconstructPar.
 
+#include "io/PvdSeries.hpp"
 #include "physics/PorousMaterial.hpp"
 #include "physics/RunState.hpp"
 #include "sph/ParticleSystem.hpp"
@@ -19,6 +20,10 @@ std::filesystem::path processorDirectory(const std::filesystem::path& caseDir, i
 /// The processor directories of a case, in rank order; empty when it is not decomposed. A gap in the numbering
 /// (processor0 and processor2 without processor1) is an InputError naming the missing one.
 std::vector<std::filesystem::path> listProcessorDirectories(const std::filesystem::path& caseDir);
+
+/// case.pvd of a decomposed case as its subdomains hold it: every piece of every time, part "<set>.processor<N>" (the
+/// file stem and the subdomain), file "processor<N>/<t>/<set>.vtp", so ParaView opens the case without reconstructing.
+PvdSeries seriesOfSubdomains(const std::vector<std::filesystem::path>& processors);
 
 /// Time `time` of a decomposed case as one system (parallel/Decomposition.hpp mergePieces): every subdomain's
 /// particles, each set sorted by id. A subdomain without the time (or with it incomplete), pieces of different runs

@@ -143,7 +143,8 @@ void PvdSeries::write(const fs::path& path) const {
   // Only the walls are written once for the whole run; a surface fluidSurface made at the first time (or any
   // other set with one file there) belongs to that time alone.
   const auto isStatic = [&](const std::string& part, const std::map<double, std::string>& files) {
-    return part == kStaticPart && files.size() == 1 && files.begin()->first == first;
+    const bool walls = part == kStaticPart || part.rfind(std::string(kStaticPart) + ".", 0) == 0; // or a subdomain's
+    return walls && files.size() == 1 && files.begin()->first == first;
   };
   std::ostringstream out;
   out << "<?xml version=\"1.0\"?>\n"

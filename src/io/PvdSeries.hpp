@@ -9,7 +9,8 @@
 
 namespace poro {
 
-/// The one part that may be static: the walls sampleParticles writes once into 0/boundary.vtp.
+/// The one part that may be static: the walls sampleParticles writes once into 0/boundary.vtp (and those of each
+/// subdomain of a parallel run, "boundary.processor<N>").
 inline constexpr const char* kStaticPart = "boundary";
 
 class PvdSeries {

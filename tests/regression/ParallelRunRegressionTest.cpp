@@ -65,6 +65,13 @@ TEST(ParallelRun, TwoAndThreeRanksEqualTheSerialRunToRoundOff) {
     ASSERT_EQ(parallel.run(POROSPH_DECOMPOSE), 0) << parallel.read("log.decomposePar");
     ASSERT_EQ(runOnRanks(parallel, ranks), 0) << parallel.read("log.poroSph");
     EXPECT_NE(parallel.read("log.poroSph").find("CG iterations"), std::string::npos);
+    // ParaView opens the decomposed case: every piece of every time, the subdomains' static walls at every time.
+    const std::string pvd = parallel.read("case.pvd");
+    EXPECT_NE(pvd.find("processor" + std::to_string(ranks - 1) + "/0.1/fluid.vtp"), std::string::npos) << pvd;
+    EXPECT_NE(pvd.find("timestep=\"0.10000000000000001\" group=\"\" part=\"1\" name=\"boundary.processor0\" "
+                       "file=\"processor0/0/boundary.vtp\""),
+              std::string::npos)
+        << pvd;
     ASSERT_EQ(parallel.run(POROSPH_RECONSTRUCT, "-time 0.1"), 0) << parallel.read("log.reconstructPar");
     // Sums run in another order on the ranks: measured 2.4e-13 of the spacing after 59 steps. 1e-9 is far below
     // anything the flow resolves and far above round-off.
