@@ -49,12 +49,8 @@ Partition partitionOf(const ParticleSystem& particles, const DecomposeSettings& 
   std::vector<Vec3> points;
   std::vector<double> weights;
   for (std::size_t s = 0; s < particles.size(); ++s) {
-    const ParticleSet& set = particles[s];
-    const double w = set.kind() == SetKind::Fluid    ? settings.fluidWeight
-                     : set.kind() == SetKind::Porous ? settings.porousWeight
-                                                     : settings.boundaryWeight;
-    points.insert(points.end(), set.x().begin(), set.x().end());
-    weights.insert(weights.end(), set.size(), w);
+    points.insert(points.end(), particles[s].x().begin(), particles[s].x().end());
+    weights.insert(weights.end(), particles[s].size(), settings.weightOf(particles[s].kind()));
   }
   return Partition::build(points, weights, comm.size(), settings.method, reductionsOver(comm));
 }
@@ -88,8 +84,7 @@ int runRank(const Arguments& args, const Communicator& comm) {
   if (partition.parts() != comm.size())
     throw InputError(saved.string() + ": a partition into " + std::to_string(partition.parts()) + " parts for " +
                      std::to_string(comm.size()) + " ranks");
-  const std::string partitionText = partition.text();
-  RankGhosts ghosts(comm, std::move(partition), simulation.particles.supportRadius());
+  RankGhosts ghosts(comm, std::move(partition), settings, simulation.particles.supportRadius());
   const bool movingWalls = !simulation.wallMotions.empty();
   Solver solver(std::move(simulation.particles), simulation.fluid, std::move(simulation.materials), simulation.solver,
                 simulation.control, simulation.start, std::move(simulation.wallMotions),
@@ -100,10 +95,11 @@ int runRank(const Arguments& args, const Communicator& comm) {
     solver.injectNaN(std::atoll(step));
   TimeWriter writer(mine, simulation.output, simulation.startName);
   writer.setMovingWalls(movingWalls);
-  writer.addUniformFile("partition", partitionText);
+
   SolverPerformanceLog performance(mine, simulation.startName);
   signals::installStopHandlers(); // kill -TERM on the ranks: every rank stops after the same step and writes it
   const auto write = [&](const Solver& s) {
+    writer.setUniformFile("partition", ghosts.partition().text()); // the cut of this time (it may have changed)
     writer.write(s.particles(), s.state());
     comm.barrier(); // every piece of this time is on disk: rank 0 lists them all for ParaView
     if (comm.rank() == 0) seriesOfSubdomains(processors).write(caseDir / "case.pvd");

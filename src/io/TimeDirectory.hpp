@@ -11,6 +11,7 @@
 #include "physics/Solver.hpp"
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -88,8 +89,9 @@ public:
   void write(const ParticleSystem& particles, const RunState& state);
   /// Walls move (prescribed motion): every time directory gets boundary.vtp, which a restart reads back.
   void setMovingWalls(bool moving) { movingWalls_ = moving; }
-  /// A file `uniform/<name>` with `text` in every time directory written from now on (a parallel run's partition).
-  void addUniformFile(const std::string& name, const std::string& text) { uniformFiles_.emplace_back(name, text); }
+  /// A file `uniform/<name>` with `text` in every time directory written from now on (a parallel run's partition);
+  /// a second call for the same name replaces its text.
+  void setUniformFile(const std::string& name, const std::string& text) { uniformFiles_[name] = text; }
   /// New writeFormat / purgeWrite from a re-read system/controlDict; the next write uses them.
   void setSettings(const OutputSettings& settings) { settings_ = settings; }
 
@@ -105,7 +107,7 @@ private:
   PvdSeries series_;
   bool movingWalls_ = false;
   std::string samplingRecord_; ///< uniform/sampling of the start time directory, copied into every one written
-  std::vector<std::pair<std::string, std::string>> uniformFiles_; ///< addUniformFile
+  std::map<std::string, std::string> uniformFiles_; ///< setUniformFile
 };
 
 } // namespace poro

@@ -15,6 +15,7 @@ DecomposeSettings readDecomposeSettings(const std::filesystem::path& caseDir) {
     s.boundaryWeight = weights->getReal("boundary", s.boundaryWeight, Range::positive());
     weights->checkUnknownKeys();
   }
+  s.rebalanceThreshold = dict.getReal("rebalanceThreshold", s.rebalanceThreshold, Range::positive());
   dict.checkUnknownKeys();
   return s;
 }

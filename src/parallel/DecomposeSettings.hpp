@@ -3,6 +3,7 @@
 /// subdomains, how they are cut, and what a particle of each kind weighs in the cut.
 
 #include "parallel/Partition.hpp"
+#include "sph/ParticleSet.hpp"
 
 #include <filesystem>
 
@@ -17,6 +18,13 @@ struct DecomposeSettings {
   double fluidWeight = 1.0;
   double porousWeight = 1.75;
   double boundaryWeight = 0.05;
+  /// A parallel run cuts anew when the heaviest rank's weight exceeds the mean by more than this share.
+  double rebalanceThreshold = 0.1;
+
+  /// The weight of one particle of a set of this kind.
+  double weightOf(SetKind kind) const {
+    return kind == SetKind::Fluid ? fluidWeight : kind == SetKind::Porous ? porousWeight : boundaryWeight;
+  }
 };
 
 /// Reads and validates `<caseDir>/system/decomposeParDict`; every error names the file, line and key.

@@ -10,15 +10,6 @@ namespace poro {
 
 namespace {
 
-double weightOf(SetKind kind, const DecomposeSettings& s) {
-  switch (kind) {
-  case SetKind::Fluid: return s.fluidWeight;
-  case SetKind::Porous: return s.porousWeight;
-  case SetKind::Boundary: return s.boundaryWeight;
-  }
-  return 1.0;
-}
-
 /// Per subdomain, its particles with a neighbour (within H) in another subdomain.
 std::vector<std::size_t> countBoundaryParticles(const std::vector<Vec3>& points, const std::vector<int>& owner,
                                                 int parts, double supportRadius) {
@@ -46,7 +37,7 @@ DecomposedParticles decomposeParticles(const ParticleSystem& particles, const De
   weights.reserve(particles.particleCount());
   for (std::size_t s = 0; s < particles.size(); ++s) {
     points.insert(points.end(), particles[s].x().begin(), particles[s].x().end());
-    weights.insert(weights.end(), particles[s].size(), weightOf(particles[s].kind(), settings));
+    weights.insert(weights.end(), particles[s].size(), settings.weightOf(particles[s].kind()));
   }
   const std::vector<int> owner = Partition::build(points, weights, parts, settings.method).owners(points);
 
@@ -64,7 +55,7 @@ DecomposedParticles decomposeParticles(const ParticleSystem& particles, const De
         static_cast<Index>(i));
     for (std::size_t p = 0; p < slots.size(); ++p) {
       summary.particles[p][s] = slots[p].size();
-      summary.weights[p] += static_cast<double>(slots[p].size()) * weightOf(set.kind(), settings);
+      summary.weights[p] += static_cast<double>(slots[p].size()) * settings.weightOf(set.kind());
       result.pieces[p].add(set.select(slots[p]));
     }
     first += set.size();

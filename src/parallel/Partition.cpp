@@ -244,7 +244,7 @@ std::string exact(double value) {
 std::string Partition::text() const {
   std::ostringstream out;
   out << "# The partition of this parallel run (parallel/Partition.hpp): a restart cuts the same way.\n"
-      << toString(method_) << " " << parts_ << "\n";
+      << toString(method_) << " " << parts_ << " " << exact(imbalanceAtCut_) << "\n";
   if (method_ == PartitionMethod::RecursiveBisection) {
     out << nodes_.size() << "\n";
     for (const Node& n : nodes_)
@@ -269,7 +269,7 @@ Partition Partition::parse(const std::string& text, const std::string& file) {
   Partition p;
   std::string method;
   std::size_t count = 0;
-  if (!(in >> method >> p.parts_) || p.parts_ < 1) fail("no method and part count");
+  if (!(in >> method >> p.parts_ >> p.imbalanceAtCut_) || p.parts_ < 1) fail("no method, part count and balance");
   if (method != "recursiveBisection" && method != "hilbertCurve") fail("unknown method '" + method + "'");
   p.method_ = partitionMethodFromName(method);
   if (p.method_ == PartitionMethod::RecursiveBisection) {

@@ -44,6 +44,10 @@ public:
                          PartitionMethod method, const Reductions& reductions = {});
 
   int parts() const { return parts_; }
+  /// The balance the cut gave (heaviest part over the mean, minus 1) when a run measured it, else negative: a run
+  /// cuts anew only when the balance has drifted past it (parallel/mpi/RankGhosts.hpp).
+  double imbalanceAtCut() const { return imbalanceAtCut_; }
+  void setImbalanceAtCut(double imbalance) { imbalanceAtCut_ = imbalance; }
   /// The cuts as text, every number exact, and back: a parallel run writes them with each time directory, so a
   /// restart cuts as the run it continues (parse's errors name `file`).
   std::string text() const;
@@ -69,6 +73,7 @@ private:
   Vec3 origin_ = Vec3::Zero();            ///< hilbertCurve: the grid
   double cellSize_ = 1.0;
   std::vector<std::uint64_t> firstKey_;   ///< hilbertCurve: part p holds keys [firstKey_[p], firstKey_[p + 1])
+  double imbalanceAtCut_ = -1.0;
 };
 
 /// Position of a cell (i, j, k), each coordinate below 2^bits, along the 3-D Hilbert curve of that order: cells next

@@ -1,12 +1,51 @@
 #include "parallel/mpi/RankGhosts.hpp"
 
+#include "core/Log.hpp"
 #include "parallel/mpi/Migration.hpp"
+
+#include <iomanip>
+#include <sstream>
 
 namespace poro {
 
+double RankGhosts::weightOf(const ParticleSystem& particles) const {
+  double w = 0.0;
+  for (std::size_t s = 0; s < particles.size(); ++s)
+    w += static_cast<double>(particles[s].size()) * settings_.weightOf(particles[s].kind());
+  return w;
+}
+
 void RankGhosts::update(ParticleSystem& particles) {
   halo_.dropGhosts(particles);
-  migrated_ = migrate(particles, partition_, comm_);
+  migrate(particles, partition_, comm_);
+  // The balance after the particles went where the cut sends them; a new cut is a function of the positions alone,
+  // so a restarted run makes the same decision at the same step.
+  const double mine = weightOf(particles);
+  const double heaviest = comm_.max(mine);
+  const double mean = comm_.sum(mine) / comm_.size();
+  const double imbalance = mean > 0.0 ? heaviest / mean - 1.0 : 0.0;
+  // Past what the cut itself gave (a cut never splits a lattice layer, so a small subdomain can not do better).
+  if (partition_.imbalanceAtCut() < 0.0) partition_.setImbalanceAtCut(imbalance);
+  if (imbalance > partition_.imbalanceAtCut() + settings_.rebalanceThreshold) {
+    std::vector<Vec3> points;
+    std::vector<double> weights;
+    for (std::size_t s = 0; s < particles.size(); ++s) {
+      points.insert(points.end(), particles[s].x().begin(), particles[s].x().end());
+      weights.insert(weights.end(), particles[s].size(), settings_.weightOf(particles[s].kind()));
+    }
+    partition_ = Partition::build(points, weights, comm_.size(), settings_.method, reductionsOver(comm_));
+    const std::size_t moved = static_cast<std::size_t>(comm_.sum(static_cast<double>(migrate(particles, partition_, comm_))));
+    const double after = comm_.max(weightOf(particles)) / mean - 1.0;
+    partition_.setImbalanceAtCut(after);
+    const std::vector<double> counts = comm_.allGather({static_cast<double>(particles.particleCount())});
+    std::ostringstream msg;
+    msg << std::setprecision(3) << "Re-partitioned: the heaviest rank was " << 100.0 * imbalance
+        << " % over the mean (rebalanceThreshold " << 100.0 * settings_.rebalanceThreshold
+        << " % past the last cut's), now "
+        << 100.0 * after << " %; " << moved << " particles moved; particles per rank:";
+    for (const double n : counts) msg << " " << static_cast<long long>(n);
+    log::info(msg.str());
+  }
   halo_.build(particles, reach_, comm_);
 }
 

@@ -1,20 +1,25 @@
 #pragma once
-/// The ranks of a parallel run as a time step sees them (physics/GhostExchange.hpp): migration by a Partition that
-/// stays fixed for the run, the halo of HaloExchange and the communicator's reductions.
+/// The ranks of a parallel run as a time step sees them (physics/GhostExchange.hpp): migration by a Partition, cut
+/// anew when the balance drifts past decomposeParDict's rebalanceThreshold, the halo of HaloExchange and the
+/// communicator's reductions.
 
+#include "parallel/DecomposeSettings.hpp"
 #include "parallel/Partition.hpp"
 #include "parallel/mpi/Communicator.hpp"
 #include "parallel/mpi/HaloExchange.hpp"
 #include "physics/GhostExchange.hpp"
+
+#include <string>
 
 namespace poro {
 
 class RankGhosts final : public GhostExchange {
 public:
   /// `reach`: how far from a subdomain's box its ghosts lie (the support radius: the lists are searched every step).
-  RankGhosts(const Communicator& comm, Partition partition, double reach)
-      : comm_(comm), partition_(std::move(partition)), reach_(reach) {}
+  RankGhosts(const Communicator& comm, Partition partition, const DecomposeSettings& settings, double reach)
+      : comm_(comm), partition_(std::move(partition)), settings_(settings), reach_(reach) {}
 
+  /// Re-partitions first when the heaviest rank's weight exceeds the mean by more than the threshold.
   void update(ParticleSystem& particles) override;
   void drop(ParticleSystem& particles) override { halo_.dropGhosts(particles); }
   std::size_t owned(std::size_t set) const override { return halo_.owned(set); }
@@ -26,15 +31,17 @@ public:
   int rank() const override { return comm_.rank(); }
   int ranks() const override { return comm_.size(); }
 
-  /// Particles that left this rank in the last update.
-  std::size_t migrated() const { return migrated_; }
+  const Partition& partition() const { return partition_; }
 
 private:
+  /// This rank's weight (decomposeParDict's weights summed over its particles).
+  double weightOf(const ParticleSystem& particles) const;
+
   const Communicator& comm_;
   Partition partition_;
+  DecomposeSettings settings_;
   double reach_;
   HaloExchange halo_;
-  std::size_t migrated_ = 0;
 };
 
 } // namespace poro

@@ -44,12 +44,15 @@ TEST_F(DecomposeSettingsTest, ReadsEveryKeyWithDefaults) {
   EXPECT_EQ(d.fluidWeight, 1.0);
   EXPECT_EQ(d.porousWeight, 1.75);
   EXPECT_EQ(d.boundaryWeight, 0.05);
+  EXPECT_EQ(d.rebalanceThreshold, 0.1);
   const DecomposeSettings e =
-      read("numberOfSubdomains: 2\nmethod: hilbertCurve\nweights: {fluid: 1.5, porous: 3, boundary: 0.5}\n");
+      read("numberOfSubdomains: 2\nmethod: hilbertCurve\nweights: {fluid: 1.5, porous: 3, boundary: 0.5}\n"
+           "rebalanceThreshold: 0.25\n");
   EXPECT_EQ(e.method, PartitionMethod::HilbertCurve);
   EXPECT_EQ(e.fluidWeight, 1.5);
   EXPECT_EQ(e.porousWeight, 3.0);
   EXPECT_EQ(e.boundaryWeight, 0.5);
+  EXPECT_EQ(e.rebalanceThreshold, 0.25);
 }
 
 TEST_F(DecomposeSettingsTest, BadValuesNameFileLineAndKey) {
