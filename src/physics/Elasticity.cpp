@@ -43,17 +43,18 @@ bool Elasticity::enabled(const StepContext& ctx) const {
 void Elasticity::prepare(const StepContext& ctx) {
   ctx_ = &ctx;
   rest_.resize(ctx.particles.size());
-  bodies_.clear();
+  std::size_t used = 0; // bodies are kept from step to step, their arrays refilled in place
   for (std::size_t p = 0; p < ctx.dynamicSets.size(); ++p) {
     const std::size_t s = ctx.dynamicSets[p];
     if (!isElastic(ctx.materials[s])) continue;
-    Body body;
+    if (used == bodies_.size()) bodies_.emplace_back();
+    Body& body = bodies_[used++];
     body.set = s;
     body.part = p;
     rest_[s].update(ctx.particles[s], ctx.kernel);
     prepareBody(ctx, body);
-    bodies_.push_back(std::move(body));
   }
+  bodies_.resize(used);
 }
 
 void Elasticity::prepareBody(const StepContext& ctx, Body& body) {

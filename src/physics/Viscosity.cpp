@@ -26,17 +26,20 @@ bool Viscosity::enabled(const StepContext& ctx) const {
 
 void Viscosity::prepare(const StepContext& ctx) {
   ctx_ = &ctx;
-  members_.clear();
+  // Members are kept from step to step: their pair arrays are refilled in place instead of freed and allocated
+  // anew (the allocator would keep the freed blocks, and the process grows by the lists' growth each step).
+  std::size_t used = 0;
   for (std::size_t p = 0; p < ctx.dynamicSets.size(); ++p) {
     const std::size_t s = ctx.dynamicSets[p];
     const auto [mu, muWall] = viscositiesOf(ctx, s);
     if (mu == 0.0 && muWall == 0.0) continue;
-    Member member;
+    if (used == members_.size()) members_.emplace_back();
+    Member& member = members_[used++];
     member.set = s;
     member.part = p;
     prepareMember(ctx, member, mu, muWall, ctx.materials[s] != nullptr);
-    members_.push_back(std::move(member));
   }
+  members_.resize(used);
 }
 
 void Viscosity::prepareMember(const StepContext& ctx, Member& member, double mu, double muWall, bool byObject) {
