@@ -1,6 +1,9 @@
 #pragma once
 /// How the process gets and returns its memory.
 
+#include <cstddef>
+#include <vector>
+
 namespace poro::memory {
 
 /// Large blocks (a particle set's fields, neighbour lists, per-pair arrays) are mapped from the system and go back
@@ -9,5 +12,16 @@ namespace poro::memory {
 /// step (fluid entering a porous body), the peak memory then grows by blocks no longer in use (about 50 MB of
 /// 590 on the published Seep at r = 1 cm). Call once, first thing in main; does nothing on other C libraries.
 void returnLargeBlocksToSystem();
+
+/// Resizes an array whose old contents are not needed (it is refilled) to n entries. Past its capacity it frees
+/// the old block first and allocates n plus 1/32: per-pair arrays grow by a little most steps while fluid enters a
+/// body, and std::vector's doubling would keep up to twice their size; an exact fit would reallocate every step.
+template <class T> void resizeForRefill(std::vector<T>& array, std::size_t n) {
+  if (n > array.capacity()) {
+    std::vector<T>().swap(array);
+    array.reserve(n + n / 32);
+  }
+  array.resize(n);
+}
 
 } // namespace poro::memory

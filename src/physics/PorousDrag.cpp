@@ -1,5 +1,6 @@
 #include "physics/PorousDrag.hpp"
 
+#include "core/Memory.hpp"
 #include "core/Parallel.hpp"
 #include "physics/CouplingDensity.hpp"
 
@@ -57,7 +58,7 @@ void PorousDrag::prepare(const StepContext& ctx) {
       const auto& gradients = ctx.gradients.of(side.self, side.other);
       const auto& xSelf = ctx.particles[side.self].x();
       const auto& xOther = ctx.particles[side.other].x();
-      side.pairCoefficient.resize(list.totalPairs());
+      memory::resizeForRefill(side.pairCoefficient, list.totalPairs());
       parallel::forEach(xSelf.size(), [&](std::size_t a) {
         std::size_t q = list.offset(a);
         for (Index bIndex : list.of(a)) {

@@ -1,5 +1,6 @@
 #include "physics/Viscosity.hpp"
 
+#include "core/Memory.hpp"
 #include "core/Parallel.hpp"
 #include "physics/FieldNames.hpp"
 #include "sph/BoundaryVolume.hpp"
@@ -53,7 +54,7 @@ void Viscosity::prepareMember(const StepContext& ctx, Member& member, double mu,
 
   const NeighbourList& same = ctx.search.list(member.set, member.set);
   const auto& sameFactors = ctx.gradients.of(member.set, member.set);
-  member.pairCoefficient.resize(same.totalPairs());
+  memory::resizeForRefill(member.pairCoefficient, same.totalPairs());
   std::vector<double> volumeOf(set.size()); // m/rho once per particle, not once per pair
   parallel::forEach(set.size(), [&](std::size_t i) { volumeOf[i] = m / rho[i]; });
   parallel::forEach(set.size(), [&](std::size_t i) {
@@ -76,7 +77,7 @@ void Viscosity::prepareMember(const StepContext& ctx, Member& member, double mu,
     const auto& xk = ctx.particles[k].x();
     const auto& vk = ctx.particles[k].real(kBoundaryVolumeField);
     auto& coeff = member.wallCoefficient[w];
-    coeff.resize(list.totalPairs());
+    memory::resizeForRefill(coeff, list.totalPairs());
     const double volume = set.particleVolume;
     parallel::forEach(set.size(), [&](std::size_t i) {
       std::size_t p = list.offset(i);

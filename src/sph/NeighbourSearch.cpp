@@ -1,6 +1,7 @@
 #include "sph/NeighbourSearch.hpp"
 
 #include "core/Error.hpp"
+#include "core/Memory.hpp"
 #include "core/Parallel.hpp"
 
 #include <algorithm>
@@ -109,7 +110,7 @@ void NeighbourSearch::assemble(std::size_t n, NeighbourList& list, const AppendN
                          std::to_string(std::numeric_limits<std::uint32_t>::max()) +
                          " its 32-bit offsets hold (some hundred million particles in one set); decompose the case (mpirun, -parallel)");
   parallel::exclusiveScan(counts, list.offsets_);
-  list.indices_.resize(static_cast<std::size_t>(list.offsets_[n]));
+  memory::resizeForRefill(list.indices_, static_cast<std::size_t>(list.offsets_[n]));
   parallel::forEach(chunks, [&](std::size_t chunk) {
     const auto& src = chunkIndices[chunk];
     std::copy(src.begin(), src.end(), list.indices_.begin() + list.offsets_[chunk * kChunk]);
