@@ -13,12 +13,12 @@ namespace poro::memory {
 /// 590 on the published Seep at r = 1 cm). Call once, first thing in main; does nothing on other C libraries.
 void returnLargeBlocksToSystem();
 
-/// Resizes an array whose old contents are not needed (it is refilled) to n entries. Past its capacity it frees
-/// the old block first and allocates n plus 1/32: per-pair arrays grow by a little most steps while fluid enters a
+/// Resizes an array whose old contents are not needed (it is refilled) to n entries. Past its capacity it
+/// allocates n plus 1/32, copying nothing: per-pair arrays grow by a little most steps while fluid enters a
 /// body, and std::vector's doubling would keep up to twice their size; an exact fit would reallocate every step.
 template <class T> void resizeForRefill(std::vector<T>& array, std::size_t n) {
   if (n > array.capacity()) {
-    std::vector<T>().swap(array);
+    array.clear(); // nothing to copy into the new block
     array.reserve(n + n / 32);
   }
   array.resize(n);
