@@ -4,6 +4,7 @@
 #include "core/Arguments.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "core/Memory.hpp"
 #include "core/Parallel.hpp"
 #include "core/StopSignals.hpp"
 #include "io/CaseLock.hpp"
@@ -19,6 +20,7 @@
 using namespace poro;
 
 int main(int argc, char* argv[]) try {
+  memory::returnLargeBlocksToSystem();
   const Arguments args(argc, argv, "poroSph",
                        "Implicit incompressible porous flow with SPH (Boettcher et al. 2025). Runs the case\n"
                        "from its start time directory to endTime and writes time directories and case.pvd.",

@@ -7,6 +7,15 @@
 
 namespace poro::linalg {
 
+namespace {
+bool sameStorage(const BlockVector& a, const BlockVector& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t p = 0; p < a.size(); ++p)
+    if (a[p].data != b[p].data) return false;
+  return true;
+}
+} // namespace
+
 CgResult solveCg(const BlockOperator& a, const BlockDiagonal& inverseDiagonal, const BlockVector& b, const BlockVector& x,
                  const CgWork& work, const CgSettings& settings) {
   CgResult result;
@@ -29,7 +38,7 @@ CgResult solveCg(const BlockOperator& a, const BlockDiagonal& inverseDiagonal, c
   };
 
   a.apply(x, work.q);
-  copy(b, work.r);
+  if (!sameStorage(b, work.r)) copy(b, work.r);
   axpy(-1.0, work.q, work.r);
   double normR = std::sqrt(dot(work.r, work.r));
   result.relativeResidual = normR / normB;

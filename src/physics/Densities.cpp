@@ -1,5 +1,6 @@
 #include "physics/Densities.hpp"
 
+#include "core/Memory.hpp"
 #include "core/Parallel.hpp"
 #include "physics/FieldNames.hpp"
 #include "physics/PoreFluidDensityBias.hpp"
@@ -67,7 +68,7 @@ void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& g
     p.list = &ctx.search.list(a, b);
     p.x = &other.x();
     p.gradients = &gradients.of(a, b);
-    p.gradients->resize(p.list->totalPairs());
+    memory::resizeForRefill(*p.gradients, p.list->totalPairs());
     for (const SetCoupling& c : couplings)
       if (c.other == b) {
         p.coupling = c;
@@ -83,7 +84,7 @@ void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& g
   std::vector<Wall> walls;
   for (std::size_t k : ctx.boundarySets) {
     auto& g = gradients.of(a, k);
-    g.resize(ctx.search.list(a, k).totalPairs());
+    memory::resizeForRefill(g, ctx.search.list(a, k).totalPairs());
     walls.push_back({&ctx.search.list(a, k), &ps[k].x(), &ps[k].real(kBoundaryVolumeField), &g});
   }
 

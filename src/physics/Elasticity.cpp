@@ -20,6 +20,30 @@ Mat3 stressOf(const Mat3& eps, double shear, double volumetric) {
   return 2.0 * shear * eps + (volumetric * eps.trace()) * Mat3::Identity();
 }
 
+/// F = [sum_t V0_t (x_t - x_s) gradW0^T] L^T of particle s, before its rotation is extracted.
+Mat3 deformationGradient(const ElasticRestState& rest, const std::vector<Vec3>& x, std::size_t s) {
+  Mat3 deformed = Mat3::Zero();
+  for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
+    const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
+    addOuter(deformed, x[t] - x[s], rest.weightedGradient(pair));
+  }
+  return deformed * rest.correction(s).transpose();
+}
+
+/// The position part's strain of particle s for the deformation gradient f and the rotation r extracted from it.
+/// F^ = I + displaced RL^T, eps = sym(F^) - I, with displaced = sum V0_t ((x_t - x_s) - R(X_t - X_s)) gradW0^T.
+/// That is deformed - R M^T for the rest moment M = L^-1, so where L inverts M, F^ = F R^T: no second pass.
+Mat3 positionStrain(const ElasticRestState& rest, const std::vector<Vec3>& x, const std::vector<Vec3>& restX,
+                    std::size_t s, const Mat3& f, const Mat3& r) {
+  if (rest.inverts(s)) return symmetric(f * r.transpose()) - Mat3::Identity();
+  Mat3 displaced = Mat3::Zero();
+  for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
+    const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
+    addOuter(displaced, (x[t] - x[s]) - r * (restX[t] - restX[s]), rest.weightedGradient(pair));
+  }
+  return symmetric(displaced * (r * rest.correction(s)).transpose());
+}
+
 /// B(g) = shear (|g|^2 I + g g^T) + volumetric g g^T: the block a stress couples back onto one velocity.
 Mat3 stiffnessBlock(const Vec3& g, double shear, double volumetric) {
   Mat3 block = (shear * g.squaredNorm()) * Mat3::Identity();
@@ -43,17 +67,18 @@ bool Elasticity::enabled(const StepContext& ctx) const {
 void Elasticity::prepare(const StepContext& ctx) {
   ctx_ = &ctx;
   rest_.resize(ctx.particles.size());
-  bodies_.clear();
+  std::size_t used = 0; // bodies are kept from step to step, their arrays refilled in place
   for (std::size_t p = 0; p < ctx.dynamicSets.size(); ++p) {
     const std::size_t s = ctx.dynamicSets[p];
     if (!isElastic(ctx.materials[s])) continue;
-    Body body;
+    if (used == bodies_.size()) bodies_.emplace_back();
+    Body& body = bodies_[used++];
     body.set = s;
     body.part = p;
     rest_[s].update(ctx.particles[s], ctx.kernel);
     prepareBody(ctx, body);
-    bodies_.push_back(std::move(body));
   }
+  bodies_.resize(used);
 }
 
 void Elasticity::prepareBody(const StepContext& ctx, Body& body) {
@@ -73,45 +98,34 @@ void Elasticity::prepareBody(const StepContext& ctx, Body& body) {
   body.shear.resize(n);
   body.volumetric.resize(n);
   body.rotatedCorrection.resize(n);
-  body.strain.resize(n);
   body.rhsStress.resize(n);
   body.stress.resize(n);
   parallel::forEach(n, [&](std::size_t s) {
-    // Rotation first (METHOD.md §6.5.2): F = [sum V0_t (x_t - x_s) gradW0^T] L^T.
-    Mat3 deformed = Mat3::Zero();
-    for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
-      const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
-      addOuter(deformed, x[t] - x[s], rest.weightedGradient(pair));
-    }
-    const Mat3& correction = rest.correction(s);
-    const Mat3 f = deformed * correction.transpose();
+    // Rotation first (METHOD.md §6.5.2).
+    const Mat3 f = deformationGradient(rest, x, s);
     rotation[s] = extractRotation(f, rotation[s]);
-    const Mat3 rl = rotation[s] * correction;
-    // F^ = I + displaced RL^T, eps = sym(F^) - I, with displaced = sum V0_t ((x_t - x_s) - R(X_t - X_s)) gradW0^T.
-    // That is deformed - R M^T for the rest moment M = L^-1, so where L inverts M, F^ = F R^T: no second pass.
-    if (rest.inverts(s)) {
-      body.strain[s] = symmetric(f * rotation[s].transpose()) - Mat3::Identity();
-    } else {
-      Mat3 displaced = Mat3::Zero();
-      for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
-        const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
-        addOuter(displaced, (x[t] - x[s]) - rotation[s] * (restX[t] - restX[s]), rest.weightedGradient(pair));
-      }
-      body.strain[s] = symmetric(displaced * rl.transpose());
-    }
+    const Mat3 rl = rotation[s] * rest.correction(s);
+    const Mat3 strain = positionStrain(rest, x, restX, s, f, rotation[s]);
     const double sat = saturation[s];
     body.shear[s] = std::max(1.0 + material.shearSoftening * sat, kLameFloor) * mu;
     body.volumetric[s] = std::max(1.0 + material.volumeSoftening * sat, kLameFloor) * volumetricModulus;
     body.rotatedCorrection[s] = rl;
     const Mat3 stress =
-        stressOf(body.strain[s], body.shear[s], body.volumetric[s]) - (bloating * sat) * Mat3::Identity();
+        stressOf(strain, body.shear[s], body.volumetric[s]) - (bloating * sat) * Mat3::Identity();
     body.rhsStress[s] = stress * rl;
   });
 }
 
 Mat3 Elasticity::strain(std::size_t s, std::size_t i) const {
-  for (const Body& body : bodies_)
-    if (body.set == s) return body.strain[i];
+  // Formed again rather than kept for every particle: prepare() has left the rotation it was formed with.
+  for (const Body& body : bodies_) {
+    if (body.set != s) continue;
+    const ParticleSet& set = ctx_->particles[s];
+    const ElasticRestState& rest = rest_[s];
+    const auto& x = set.x();
+    return positionStrain(rest, x, set.vec3(field::restPosition), i, deformationGradient(rest, x, i),
+                          set.mat3(field::rotation)[i]);
+  }
   return Mat3::Zero();
 }
 

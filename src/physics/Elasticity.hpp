@@ -45,7 +45,6 @@ private:
     std::vector<double> shear;           ///< k_mu mu [Pa]
     std::vector<double> volumetric;      ///< k_lambda lambda (or k_lambda with unitLambda) [Pa]
     std::vector<Mat3> rotatedCorrection; ///< R_s L_s
-    std::vector<Mat3> strain;            ///< position-part strain at x^n
     std::vector<Mat3> rhsStress;         ///< P_s R_s L_s of the position part (with bloating)
     mutable std::vector<Mat3> stress;    ///< P_s R_s L_s of the velocity part (scratch of addApply)
   };

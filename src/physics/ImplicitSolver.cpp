@@ -9,12 +9,12 @@
 namespace poro {
 
 namespace {
-const char* const kRhs = "cgRhs";
+// Three Krylov vectors besides the unknown: the right-hand side turns into the residual r in place, and the
+// preconditioned residual z and the product q = A p take turns in one field (linalg::CgWork).
+const char* const kRhs = "cgRhs"; ///< b, then r
 const char* const kUnknown = "cgU";
-const char* const kR = "cgR";
-const char* const kZ = "cgZ";
 const char* const kP = "cgP";
-const char* const kQ = "cgQ";
+const char* const kQ = "cgQ"; ///< z and q
 const char* const kInverseDiagonal = "cgInverseDiagonal";
 
 /// Rows of Fixed particles hold their known velocity: (A u)_a = m u_a, b_a = m v^n_a, D_a = m I. Their
@@ -48,7 +48,7 @@ ImplicitSolver::ImplicitSolver(const ImplicitSettings& settings, std::vector<std
 
 void ImplicitSolver::registerFields(ParticleSet& set) {
   set.addVec3(field::deltaV, Restart);
-  for (const char* name : {kRhs, kUnknown, kR, kZ, kP, kQ}) set.addVec3(name);
+  for (const char* name : {kRhs, kUnknown, kP, kQ}) set.addVec3(name);
   set.addMat3(kInverseDiagonal);
 }
 
@@ -152,7 +152,7 @@ linalg::CgResult ImplicitSolver::solve(const StepContext& ctx) {
       parallel::forEach(part.size, [&](std::size_t i) { blocks[i] = Mat3(blocks[i].inverse()); });
     }
   }
-  const linalg::CgWork work{view(ctx, kR), view(ctx, kZ), view(ctx, kP), view(ctx, kQ)};
+  const linalg::CgWork work{b, view(ctx, kQ), view(ctx, kP), view(ctx, kQ)};
   linalg::CgSettings cg{settings_.tolerance, settings_.maxIterations, {}};
   if (ctx.ghosts) cg.sumOverRanks = [&ctx](double local) { return ctx.sumOverRanks(local); };
   result = linalg::solveCg(Operator(*this), inverse, b, u, work, cg);

@@ -1,5 +1,6 @@
 #include "physics/PorousDrag.hpp"
 
+#include "core/Memory.hpp"
 #include "core/Parallel.hpp"
 #include "physics/CouplingDensity.hpp"
 
@@ -25,7 +26,7 @@ bool PorousDrag::enabled(const StepContext& ctx) const {
 
 void PorousDrag::prepare(const StepContext& ctx) {
   ctx_ = &ctx;
-  sides_.clear();
+  std::size_t used = 0; // sides are kept from step to step, their pair arrays refilled in place
   std::size_t fluidPart = 0;
   for (std::size_t p = 0; p < ctx.dynamicSets.size(); ++p)
     if (ctx.particles[ctx.dynamicSets[p]].kind() == SetKind::Fluid) fluidPart = p;
@@ -47,13 +48,17 @@ void PorousDrag::prepare(const StepContext& ctx) {
       return coefficient(mu, fluid.mass, rhoMix(i), solid.mass, rhoSolid(s), distance2, regulariser);
     };
     for (const bool fluidSide : {true, false}) {
-      Side side{
-          fluidSide ? fluidSet : t, fluidSide ? fluidPart : p, fluidSide ? t : fluidSet, fluidSide ? p : fluidPart, {}};
+      if (used == sides_.size()) sides_.emplace_back();
+      Side& side = sides_[used++];
+      side.self = fluidSide ? fluidSet : t;
+      side.part = fluidSide ? fluidPart : p;
+      side.other = fluidSide ? t : fluidSet;
+      side.otherPart = fluidSide ? p : fluidPart;
       const NeighbourList& list = ctx.search.list(side.self, side.other);
       const auto& gradients = ctx.gradients.of(side.self, side.other);
       const auto& xSelf = ctx.particles[side.self].x();
       const auto& xOther = ctx.particles[side.other].x();
-      side.pairCoefficient.resize(list.totalPairs());
+      memory::resizeForRefill(side.pairCoefficient, list.totalPairs());
       parallel::forEach(xSelf.size(), [&](std::size_t a) {
         std::size_t q = list.offset(a);
         for (Index bIndex : list.of(a)) {
@@ -64,9 +69,9 @@ void PorousDrag::prepare(const StepContext& ctx) {
           ++q;
         }
       });
-      sides_.push_back(std::move(side));
     }
   }
+  sides_.resize(used);
 }
 
 void PorousDrag::addApply(const linalg::BlockVector& u, const linalg::BlockVector& au) const {

@@ -1,5 +1,6 @@
 #include "physics/Viscosity.hpp"
 
+#include "core/Memory.hpp"
 #include "core/Parallel.hpp"
 #include "physics/FieldNames.hpp"
 #include "sph/BoundaryVolume.hpp"
@@ -26,17 +27,20 @@ bool Viscosity::enabled(const StepContext& ctx) const {
 
 void Viscosity::prepare(const StepContext& ctx) {
   ctx_ = &ctx;
-  members_.clear();
+  // Members are kept from step to step: their pair arrays are refilled in place instead of freed and allocated
+  // anew (the allocator would keep the freed blocks, and the process grows by the lists' growth each step).
+  std::size_t used = 0;
   for (std::size_t p = 0; p < ctx.dynamicSets.size(); ++p) {
     const std::size_t s = ctx.dynamicSets[p];
     const auto [mu, muWall] = viscositiesOf(ctx, s);
     if (mu == 0.0 && muWall == 0.0) continue;
-    Member member;
+    if (used == members_.size()) members_.emplace_back();
+    Member& member = members_[used++];
     member.set = s;
     member.part = p;
     prepareMember(ctx, member, mu, muWall, ctx.materials[s] != nullptr);
-    members_.push_back(std::move(member));
   }
+  members_.resize(used);
 }
 
 void Viscosity::prepareMember(const StepContext& ctx, Member& member, double mu, double muWall, bool byObject) {
@@ -50,7 +54,7 @@ void Viscosity::prepareMember(const StepContext& ctx, Member& member, double mu,
 
   const NeighbourList& same = ctx.search.list(member.set, member.set);
   const auto& sameFactors = ctx.gradients.of(member.set, member.set);
-  member.pairCoefficient.resize(same.totalPairs());
+  memory::resizeForRefill(member.pairCoefficient, same.totalPairs());
   std::vector<double> volumeOf(set.size()); // m/rho once per particle, not once per pair
   parallel::forEach(set.size(), [&](std::size_t i) { volumeOf[i] = m / rho[i]; });
   parallel::forEach(set.size(), [&](std::size_t i) {
@@ -73,7 +77,7 @@ void Viscosity::prepareMember(const StepContext& ctx, Member& member, double mu,
     const auto& xk = ctx.particles[k].x();
     const auto& vk = ctx.particles[k].real(kBoundaryVolumeField);
     auto& coeff = member.wallCoefficient[w];
-    coeff.resize(list.totalPairs());
+    memory::resizeForRefill(coeff, list.totalPairs());
     const double volume = set.particleVolume;
     parallel::forEach(set.size(), [&](std::size_t i) {
       std::size_t p = list.offset(i);

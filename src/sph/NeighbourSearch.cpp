@@ -1,6 +1,7 @@
 #include "sph/NeighbourSearch.hpp"
 
 #include "core/Error.hpp"
+#include "core/Memory.hpp"
 #include "core/Parallel.hpp"
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <limits>
 #include <numeric>
 #include <sstream>
+#include <string>
 
 namespace poro {
 
@@ -90,7 +92,7 @@ template <class AppendNeighbours>
 void NeighbourSearch::assemble(std::size_t n, NeighbourList& list, const AppendNeighbours& append) {
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
   std::vector<std::vector<Index>> chunkIndices(chunks);
-  std::vector<std::int64_t> counts(n, 0);
+  std::vector<std::uint32_t> counts(n, 0);
   parallel::forEachTask(chunks, [&](std::size_t chunk) {
     std::vector<Index>& out = chunkIndices[chunk];
     out.reserve(kChunk * 40);
@@ -98,11 +100,17 @@ void NeighbourSearch::assemble(std::size_t n, NeighbourList& list, const AppendN
     for (std::size_t i = chunk * kChunk; i < end; ++i) {
       const std::size_t before = out.size();
       append(i, out);
-      counts[i] = static_cast<std::int64_t>(out.size() - before);
+      counts[i] = static_cast<std::uint32_t>(out.size() - before);
     }
   });
+  std::uint64_t pairs = 0;
+  for (const std::vector<Index>& out : chunkIndices) pairs += out.size();
+  if (pairs > std::numeric_limits<std::uint32_t>::max())
+    throw NumericalError("neighbour search: " + std::to_string(pairs) + " pairs in one list, more than the " +
+                         std::to_string(std::numeric_limits<std::uint32_t>::max()) +
+                         " its 32-bit offsets hold (some hundred million particles in one set); decompose the case (mpirun, -parallel)");
   parallel::exclusiveScan(counts, list.offsets_);
-  list.indices_.resize(static_cast<std::size_t>(list.offsets_[n]));
+  memory::resizeForRefill(list.indices_, static_cast<std::size_t>(list.offsets_[n]));
   parallel::forEach(chunks, [&](std::size_t chunk) {
     const auto& src = chunkIndices[chunk];
     std::copy(src.begin(), src.end(), list.indices_.begin() + list.offsets_[chunk * kChunk]);

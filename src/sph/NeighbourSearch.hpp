@@ -34,7 +34,8 @@ public:
 
 private:
   friend class NeighbourSearch;
-  std::vector<std::int64_t> offsets_;
+  /// 32 bits: a list of more than 2^32 - 1 pairs (16 GiB of indices) is refused by the search.
+  std::vector<std::uint32_t> offsets_;
   std::vector<Index> indices_;
 };
 
