@@ -104,8 +104,7 @@ int runRank(const Arguments& args, const Communicator& comm) {
     comm.barrier(); // every piece of this time is on disk: rank 0 lists them all for ParaView
     if (comm.rank() == 0) seriesOfSubdomains(processors).write(caseDir / "case.pvd");
   };
-  const RunOutcome outcome = solver.run(write, {},
-             [&](const Solver& s) { performance.record(s); });
+  const RunOutcome outcome = solver.run(write, {}, [&](const Solver& s) { performance.record(s); });
   return outcome.end == RunOutcome::End::Signal ? 1 : 0;
 }
 

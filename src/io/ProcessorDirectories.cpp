@@ -75,9 +75,8 @@ RunState readDecomposedRunState(const std::vector<fs::path>& processors, const s
     const RunState other = readRunState(processors[p] / time);
     if (other.time != state.time || other.step != state.step || other.nextDeltaT != state.nextDeltaT ||
         other.rigidBodies.size() != state.rigidBodies.size())
-      throw InputError((processors[p] / time / "uniform" / "time").string() + ": step " +
-                       std::to_string(other.step) + ", but " + (processors.front() / time).string() +
-                       " is at step " + std::to_string(state.step) +
+      throw InputError((processors[p] / time / "uniform" / "time").string() + ": step " + std::to_string(other.step) +
+                       ", but " + (processors.front() / time).string() + " is at step " + std::to_string(state.step) +
                        "; the subdomains of one time must come from one run");
   }
   return state;

@@ -51,8 +51,8 @@ DecomposedParticles decomposeParticles(const ParticleSystem& particles, const De
   for (std::size_t s = 0; s < particles.size(); ++s) {
     const ParticleSet& set = particles[s];
     std::vector<std::vector<Index>> slots(static_cast<std::size_t>(parts));
-    for (std::size_t i = 0; i < set.size(); ++i) slots[static_cast<std::size_t>(owner[first + i])].push_back(
-        static_cast<Index>(i));
+    for (std::size_t i = 0; i < set.size(); ++i)
+      slots[static_cast<std::size_t>(owner[first + i])].push_back(static_cast<Index>(i));
     for (std::size_t p = 0; p < slots.size(); ++p) {
       summary.particles[p][s] = slots[p].size();
       summary.weights[p] += static_cast<double>(slots[p].size()) * settings.weightOf(set.kind());

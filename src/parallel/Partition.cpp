@@ -3,10 +3,10 @@
 #include "core/Error.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <sstream>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
+#include <sstream>
 #include <stdexcept>
 
 namespace poro {
@@ -101,8 +101,9 @@ Partition Partition::build(const std::vector<Vec3>& points, const std::vector<do
   std::vector<double> below(keyed.size() + 1, 0.0); // below[k]: weight of the first k keys
   for (std::size_t k = 0; k < keyed.size(); ++k) below[k + 1] = below[k] + keyed[k].second;
   const auto weightBelow = [&](std::uint64_t key) {
-    const auto at = std::lower_bound(keyed.begin(), keyed.end(), key,
-                                     [](const std::pair<std::uint64_t, double>& k, std::uint64_t v) { return k.first < v; });
+    const auto at =
+        std::lower_bound(keyed.begin(), keyed.end(), key,
+                         [](const std::pair<std::uint64_t, double>& k, std::uint64_t v) { return k.first < v; });
     return below[static_cast<std::size_t>(at - keyed.begin())];
   };
   const double total = reduced(reductions.sum, below.back());
@@ -187,8 +188,10 @@ int Partition::buildNode(std::vector<std::size_t>& slots, const std::vector<Vec3
     double below = -INFINITY, above = INFINITY;
     for (const std::size_t i : slots) {
       const double x = points[i][axis];
-      if (x < cut) below = std::max(below, x);
-      else above = std::min(above, x);
+      if (x < cut)
+        below = std::max(below, x);
+      else
+        above = std::min(above, x);
     }
     below = reduced(reductions.max, below);
     above = reduced(reductions.min, above);
@@ -228,8 +231,8 @@ int Partition::ownerOf(const Vec3& x) const {
     return static_cast<int>(std::upper_bound(firstKey_.begin(), firstKey_.end(), key) - firstKey_.begin()) - 1;
   }
   std::size_t n = 0;
-  while (nodes_[n].axis >= 0) n = static_cast<std::size_t>(x[nodes_[n].axis] < nodes_[n].cut ? nodes_[n].left
-                                                                                                : nodes_[n].right);
+  while (nodes_[n].axis >= 0)
+    n = static_cast<std::size_t>(x[nodes_[n].axis] < nodes_[n].cut ? nodes_[n].left : nodes_[n].right);
   return nodes_[n].part;
 }
 
@@ -263,8 +266,9 @@ Partition Partition::parse(const std::string& text, const std::string& file) {
   std::string line;
   while (in.peek() == '#') std::getline(in, line);
   const auto fail = [&](const std::string& what) {
-    throw InputError(file + ": " + what + "; the file is damaged. Restart from a reconstructed time instead "
-                                          "(reconstructPar, then decomposePar -force)");
+    throw InputError(file + ": " + what +
+                     "; the file is damaged. Restart from a reconstructed time instead "
+                     "(reconstructPar, then decomposePar -force)");
   };
   Partition p;
   std::string method;
@@ -279,9 +283,9 @@ Partition Partition::parse(const std::string& text, const std::string& file) {
       if (!(in >> n.axis >> n.cut >> n.left >> n.right >> n.part)) fail("a node of the cut tree is cut short");
     for (std::size_t k = 0; k < count; ++k) { // children come after their parent: the walk down always ends
       const Node& n = p.nodes_[k];
-      if (n.axis > 2 || (n.axis >= 0 && (n.left <= static_cast<int>(k) || n.right <= static_cast<int>(k) ||
-                                         static_cast<std::size_t>(n.left) >= count ||
-                                         static_cast<std::size_t>(n.right) >= count)))
+      if (n.axis > 2 ||
+          (n.axis >= 0 && (n.left <= static_cast<int>(k) || n.right <= static_cast<int>(k) ||
+                           static_cast<std::size_t>(n.left) >= count || static_cast<std::size_t>(n.right) >= count)))
         fail("node " + std::to_string(k) + " of the cut tree points outside it");
       if (n.axis < 0 && (n.part < 0 || n.part >= p.parts_)) fail("a part number out of range");
     }

@@ -58,10 +58,10 @@ public:
 
 private:
   struct Node {
-    int axis = -1;   ///< -1: a leaf
-    double cut = 0;  ///< x[axis] < cut goes left
+    int axis = -1;  ///< -1: a leaf
+    double cut = 0; ///< x[axis] < cut goes left
     int left = -1, right = -1;
-    int part = 0;    ///< a leaf's part
+    int part = 0; ///< a leaf's part
   };
   int buildNode(std::vector<std::size_t>& slots, const std::vector<Vec3>& points, const std::vector<double>& weights,
                 int parts, int first, const Reductions& reductions);
@@ -69,10 +69,10 @@ private:
 
   int parts_ = 1;
   PartitionMethod method_ = PartitionMethod::RecursiveBisection;
-  std::vector<Node> nodes_;               ///< recursiveBisection: the cut tree, root first
-  Vec3 origin_ = Vec3::Zero();            ///< hilbertCurve: the grid
+  std::vector<Node> nodes_;    ///< recursiveBisection: the cut tree, root first
+  Vec3 origin_ = Vec3::Zero(); ///< hilbertCurve: the grid
   double cellSize_ = 1.0;
-  std::vector<std::uint64_t> firstKey_;   ///< hilbertCurve: part p holds keys [firstKey_[p], firstKey_[p + 1])
+  std::vector<std::uint64_t> firstKey_; ///< hilbertCurve: part p holds keys [firstKey_[p], firstKey_[p + 1])
   double imbalanceAtCut_ = -1.0;
 };
 

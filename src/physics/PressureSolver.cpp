@@ -300,7 +300,8 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
           fixed ? parallel::sum<std::size_t>(n, [&](std::size_t i) -> std::size_t { return fixed[i] ? 0 : 1; }) : n));
       const double mean = active > 0 ? ctx.sumOverRanks(errorSum) / active : 0.0;
       worstMean = std::max(worstMean, mean);
-      worstMax = std::max(worstMax, ctx.maxOverRanks(parallel::max(n, 0.0, [&](std::size_t i) { return residual[i]; })));
+      worstMax =
+          std::max(worstMax, ctx.maxOverRanks(parallel::max(n, 0.0, [&](std::size_t i) { return residual[i]; })));
     }
     ctx.refreshGhosts({field::pi, field::contactPressure});
     stats.iterations = it;

@@ -57,8 +57,7 @@ std::string formatDuration(double seconds) {
 
 Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vector<PorousMaterial> materials,
                const SolverSettings& settings, const TimeControl& control, const RunState& start,
-               std::vector<ObjectMotion> wallMotions, std::vector<RigidBody::Spec> rigidBodies,
-               GhostExchange* ghosts)
+               std::vector<ObjectMotion> wallMotions, std::vector<RigidBody::Spec> rigidBodies, GhostExchange* ghosts)
     : particles_(std::move(particles)), fluid_(fluid), materials_(std::move(materials)), settings_(settings),
       control_(control), state_(start), kernel_(particles_.supportRadius()),
       search_(particles_.supportRadius(), settings.searchSkin * particles_.supportRadius()),
@@ -591,8 +590,9 @@ void Solver::checkHealth(const Writer& write) {
     if (stopAll || (n > 0 && (health.leavingDomain != HealthAction::Warn || n > outsideReported_))) {
       std::ostringstream msg;
       msg << std::setprecision(6) << "step " << state_.step << " (time " << state_.time << " s): "
-          << (n == 0 ? std::string("particles of another rank")
-                     : describe(particles_, outside, [&](std::size_t s, std::size_t i) { return particles_[s].x()[i]; }))
+          << (n == 0
+                  ? std::string("particles of another rank")
+                  : describe(particles_, outside, [&](std::size_t s, std::size_t i) { return particles_[s].x()[i]; }))
           << " left the domain " << describeDomain()
           << ". Particles escape through gaps in the walls wider than a particle diameter or are thrown out by a "
              "pressure spike ("

@@ -150,7 +150,7 @@ private:
   std::optional<Domain> domain_;    ///< particles outside it fail the leaving-domain check
   std::size_t outsideReported_ = 0; ///< particles outside the domain already warned about (policy warn)
   long long lastWrittenStep_ = -1;
-  bool startChecked_ = false; ///< checkStart() ran (main calls it before anything is written)
+  bool startChecked_ = false;       ///< checkStart() ran (main calls it before anything is written)
   GhostExchange* ghosts_ = nullptr; ///< a parallel run's ranks, else null
   long long injectNaNStep_ = -1;
 };

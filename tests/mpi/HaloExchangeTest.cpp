@@ -2,10 +2,10 @@
 // subdomain box, hence every neighbour (within the reach) of each of its own particles, with every field bit for bit,
 // in rank order; refresh() updates only the fields it is given; a rebuild after motion drops the old ghosts.
 
+#include "parallel/mpi/HaloExchange.hpp"
 #include "MpiTestMain.hpp"
 #include "parallel/HaloPattern.hpp"
 #include "parallel/Partition.hpp"
-#include "parallel/mpi/HaloExchange.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // A partition cut from particles spread over ranks equals the one cut from all of them in one process, and
 // migration then leaves each rank exactly the particles its part holds, every field intact.
 
-#include "MpiTestMain.hpp"
 #include "parallel/mpi/Migration.hpp"
+#include "MpiTestMain.hpp"
 
 #include <gtest/gtest.h>
 

@@ -43,7 +43,9 @@ void expectSameParticles(const ParticleSet& a, const ParticleSet& b, double tole
         ASSERT_LE((x - b.mat3(f.name)[j]).norm(), tolerance * std::max(1.0, x.norm())) << f.name;
         break;
       }
-      case FieldType::Int: ASSERT_EQ(a.integer(f.name)[i], b.integer(f.name)[j]) << f.name; break;
+      case FieldType::Int:
+        ASSERT_EQ(a.integer(f.name)[i], b.integer(f.name)[j]) << f.name;
+        break;
       }
     }
   }

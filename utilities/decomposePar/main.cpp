@@ -70,7 +70,8 @@ std::string report(const ParticleSystem& particles, const DecompositionSummary& 
   std::ostringstream out;
   out << std::left << std::setw(12) << "subdomain";
   for (std::size_t s = 0; s < particles.size(); ++s) out << std::right << std::setw(12) << particles[s].name();
-  out << std::setw(10) << "weight" << std::setw(12) << "interface" << "\n";
+  out << std::setw(10) << "weight" << std::setw(12) << "interface"
+      << "\n";
   double total = 0.0;
   for (const double w : summary.weights) total += w;
   for (std::size_t p = 0; p < summary.weights.size(); ++p) {

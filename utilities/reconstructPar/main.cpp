@@ -37,8 +37,7 @@ bool ownBoundaries(const std::vector<fs::path>& processors, const std::string& t
 int main(int argc, char* argv[]) try {
   const Arguments args(
       argc, argv, "reconstructPar",
-      "Merges the subdomains of a decomposed case (processor<N>/<t>/) back into time directories <t>/.",
-      [] {
+      "Merges the subdomains of a decomposed case (processor<N>/<t>/) back into time directories <t>/.", [] {
         auto options = timeOptions("reconstruct");
         options.push_back({"newTimes", "", "only the times the case does not have yet"});
         return options;

@@ -79,8 +79,8 @@ std::vector<std::vector<char>> Communicator::exchange(const std::vector<std::vec
   for (std::size_t q = 0; q < toRank.size(); ++q) {
     if (sendCounts[q] == 0) continue;
     requests.emplace_back();
-    check(MPI_Isend(toRank[q].data(), static_cast<int>(sendCounts[q]), MPI_CHAR, static_cast<int>(q), 0,
-                    MPI_COMM_WORLD, &requests.back()),
+    check(MPI_Isend(toRank[q].data(), static_cast<int>(sendCounts[q]), MPI_CHAR, static_cast<int>(q), 0, MPI_COMM_WORLD,
+                    &requests.back()),
           "MPI_Isend");
   }
   check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE), "MPI_Waitall");

@@ -33,10 +33,18 @@ std::size_t bytesPerParticle(const ParticleSet& set, const std::vector<std::stri
   std::size_t bytes = 0; // no particle to measure: from the field types
   for (const std::string& name : names.empty() ? set.fieldNames() : names) {
     switch (set.info(name)->type) {
-    case FieldType::Real: bytes += sizeof(Real); break;
-    case FieldType::Vec3: bytes += sizeof(Vec3); break;
-    case FieldType::Mat3: bytes += sizeof(Mat3); break;
-    case FieldType::Int: bytes += sizeof(std::int64_t); break;
+    case FieldType::Real:
+      bytes += sizeof(Real);
+      break;
+    case FieldType::Vec3:
+      bytes += sizeof(Vec3);
+      break;
+    case FieldType::Mat3:
+      bytes += sizeof(Mat3);
+      break;
+    case FieldType::Int:
+      bytes += sizeof(std::int64_t);
+      break;
     }
   }
   return bytes;
@@ -103,8 +111,8 @@ void HaloExchange::build(ParticleSystem& particles, double reach, const Communic
     positions.push_back(&particles[s].x());
   }
   const Box mine = boundingBox(positions);
-  const std::vector<double> flat = comm.allGather({mine.lo.x(), mine.lo.y(), mine.lo.z(), mine.hi.x(), mine.hi.y(),
-                                                   mine.hi.z()});
+  const std::vector<double> flat =
+      comm.allGather({mine.lo.x(), mine.lo.y(), mine.lo.z(), mine.hi.x(), mine.hi.y(), mine.hi.z()});
   std::vector<Box> boxes(ranks);
   for (std::size_t q = 0; q < ranks; ++q) {
     boxes[q].lo = Vec3(flat[6 * q], flat[6 * q + 1], flat[6 * q + 2]);

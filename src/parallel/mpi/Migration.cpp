@@ -65,8 +65,9 @@ std::size_t migrate(ParticleSystem& particles, const Partition& partition, const
       set.resize(first + count);
       at += set.unpack(received[q].data() + at, count, first, {});
     }
-    if (at != received[q].size()) throw std::logic_error("migrate: a message from rank " + std::to_string(q) +
-                                                         " has other sets or fields than this rank");
+    if (at != received[q].size())
+      throw std::logic_error("migrate: a message from rank " + std::to_string(q) +
+                             " has other sets or fields than this rank");
   }
   return left;
 }

@@ -34,15 +34,16 @@ void RankGhosts::update(ParticleSystem& particles) {
       weights.insert(weights.end(), particles[s].size(), settings_.weightOf(particles[s].kind()));
     }
     partition_ = Partition::build(points, weights, comm_.size(), settings_.method, reductionsOver(comm_));
-    const std::size_t moved = static_cast<std::size_t>(comm_.sum(static_cast<double>(migrate(particles, partition_, comm_))));
+    const std::size_t moved =
+        static_cast<std::size_t>(comm_.sum(static_cast<double>(migrate(particles, partition_, comm_))));
     const double after = comm_.max(weightOf(particles)) / mean - 1.0;
     partition_.setImbalanceAtCut(after);
     const std::vector<double> counts = comm_.allGather({static_cast<double>(particles.particleCount())});
     std::ostringstream msg;
     msg << std::setprecision(3) << "Re-partitioned: the heaviest rank was " << 100.0 * imbalance
         << " % over the mean (rebalanceThreshold " << 100.0 * settings_.rebalanceThreshold
-        << " % past the last cut's), now "
-        << 100.0 * after << " %; " << moved << " particles moved; particles per rank:";
+        << " % past the last cut's), now " << 100.0 * after << " %; " << moved
+        << " particles moved; particles per rank:";
     for (const double n : counts) msg << " " << static_cast<long long>(n);
     log::info(msg.str());
   }

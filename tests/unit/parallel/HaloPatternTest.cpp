@@ -19,7 +19,7 @@ TEST(HaloPattern, BoxDistanceIsEuclideanOutsideAndZeroInside) {
   EXPECT_FALSE(box.empty());
   EXPECT_EQ(box.distance(Vec3(0.5, 1, 1)), 0.0);
   EXPECT_DOUBLE_EQ(box.distance(Vec3(-3, 1, 1)), 3.0);
-  EXPECT_DOUBLE_EQ(box.distance(Vec3(4, 6, 3)), 5.0);       // 3-4-5 past a corner edge
+  EXPECT_DOUBLE_EQ(box.distance(Vec3(4, 6, 3)), 5.0);            // 3-4-5 past a corner edge
   EXPECT_DOUBLE_EQ(box.distance(Vec3(2, 3, 4)), std::sqrt(3.0)); // past the corner
 }
 
@@ -36,7 +36,7 @@ TEST(HaloPattern, LendsWhatLiesWithinReachOfEachOtherBox) {
   ASSERT_EQ(lists.size(), 4u);
   EXPECT_TRUE(lists[0].empty());
   EXPECT_EQ(lists[1], (std::vector<Index>{0, 2, 3}));
-  EXPECT_TRUE(lists[2].empty()); // an empty subdomain
+  EXPECT_TRUE(lists[2].empty());                // an empty subdomain
   EXPECT_EQ(lists[3], (std::vector<Index>{3})); // 0.076 from that edge; particle 2 is 0.52 off in y
 }
 
