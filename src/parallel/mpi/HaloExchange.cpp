@@ -25,12 +25,9 @@ std::uint64_t takeCount(const std::vector<char>& in, std::size_t& at) {
   return value;
 }
 
-/// Bytes one particle of `set` takes in a message with the fields `names` (all when empty).
+/// Bytes one particle of `set` takes in a message with the fields `names` (all when empty), from the field types.
 std::size_t bytesPerParticle(const ParticleSet& set, const std::vector<std::string>& names) {
-  std::vector<char> one;
-  set.pack(set.size() > 0 ? std::vector<Index>{0} : std::vector<Index>{}, names, one);
-  if (set.size() > 0) return one.size();
-  std::size_t bytes = 0; // no particle to measure: from the field types
+  std::size_t bytes = 0;
   for (const std::string& name : names.empty() ? set.fieldNames() : names) {
     switch (set.info(name)->type) {
     case FieldType::Real:
@@ -141,16 +138,14 @@ void HaloExchange::build(ParticleSystem& particles, double reach, const Communic
 void HaloExchange::refresh(ParticleSystem& particles, const std::vector<std::string>& names,
                            const Communicator& comm) const {
   const std::vector<std::vector<char>> received = comm.exchange(pack(particles, names, false));
+  std::vector<std::vector<std::string>> fields(particles.size());
+  for (std::size_t s = 0; s < particles.size(); ++s) fields[s] = fieldsOf(particles[s], names);
+  std::vector<std::size_t> at(received.size(), 0); // where the next set's data starts in each rank's message
   for (std::size_t s = 0; s < particles.size(); ++s) {
     std::size_t first = owned_[s];
     for (std::size_t q = 0; q < received.size(); ++q) {
       const std::size_t count = received_[s][q];
-      if (count > 0) {
-        std::size_t at = 0; // this set's data in q's message: after the earlier sets'
-        for (std::size_t t = 0; t < s; ++t)
-          at += received_[t][q] * bytesPerParticle(particles[t], fieldsOf(particles[t], names));
-        particles[s].unpack(received[q].data() + at, count, first, fieldsOf(particles[s], names));
-      }
+      if (count > 0) at[q] += particles[s].unpack(received[q].data() + at[q], count, first, fields[s]);
       first += count;
     }
   }
