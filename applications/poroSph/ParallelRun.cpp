@@ -6,15 +6,18 @@
 #include "core/StopSignals.hpp"
 #include "io/CaseLock.hpp"
 #include "io/CaseReader.hpp"
+#include "io/ControlDictWatcher.hpp"
 #include "io/ProcessorDirectories.hpp"
 #include "io/SolverPerformanceLog.hpp"
 #include "io/TimeDirectory.hpp"
 #include "parallel/DecomposeSettings.hpp"
 #include "parallel/mpi/Migration.hpp"
 #include "parallel/mpi/RankGhosts.hpp"
+#include "physics/FieldNames.hpp"
 
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -33,14 +36,22 @@ std::string readText(const fs::path& file) {
 
 /// What the parallel run does not do yet, refused by name rather than run wrong.
 void refuseUnsupported(const SimulationCase& simulation) {
-  for (std::size_t s = 0; s < simulation.particles.size(); ++s)
-    if (simulation.particles[s].kind() == SetKind::Porous)
-      throw InputError("poroSph -parallel: the case has porous particles (set '" + simulation.particles[s].name() +
-                       "'); decomposed runs handle fluid and walls so far. Run it serially "
-                       "(reconstructPar, then poroSph without -parallel)");
   if (!simulation.rigidBodies.empty())
-    throw InputError("poroSph -parallel: the case has rigid bodies; decomposed runs handle fluid and walls so far. "
-                     "Run it serially (reconstructPar, then poroSph without -parallel)");
+    throw InputError("poroSph -parallel: the case has rigid bodies; decomposed runs handle fluid, walls and porous "
+                     "bodies so far. Run it serially (reconstructPar, then poroSph without -parallel)");
+}
+
+/// Elastic sets lend by rest position too, two support radii deep: the rest neighbours of every own particle and
+/// theirs (RestHalo), so a rank never lacks one, however far a body has deformed or moved.
+RestHalo restHaloOf(const SimulationCase& simulation) {
+  RestHalo rest{field::restPosition, std::vector<double>(simulation.particles.size(), 0.0)};
+  for (std::size_t s = 0; s < simulation.particles.size(); ++s) {
+    const ParticleSet& set = simulation.particles[s];
+    if (set.kind() != SetKind::Porous) continue;
+    for (const PorousMaterial& m : simulation.materials)
+      if (m.name == set.name() && m.youngsModulus > 0.0) rest.reach[s] = 2.0 * simulation.particles.supportRadius();
+  }
+  return rest;
 }
 
 /// The partition of the particles of every rank, by decomposeParDict's method and weights: decomposePar's cut of the
@@ -84,7 +95,7 @@ int runRank(const Arguments& args, const Communicator& comm) {
   if (partition.parts() != comm.size())
     throw InputError(saved.string() + ": a partition into " + std::to_string(partition.parts()) + " parts for " +
                      std::to_string(comm.size()) + " ranks");
-  RankGhosts ghosts(comm, std::move(partition), settings, simulation.particles.supportRadius());
+  RankGhosts ghosts(comm, std::move(partition), settings, simulation.particles.supportRadius(), restHaloOf(simulation));
   const bool movingWalls = !simulation.wallMotions.empty();
   Solver solver(std::move(simulation.particles), simulation.fluid, std::move(simulation.materials), simulation.solver,
                 simulation.control, simulation.start, std::move(simulation.wallMotions),
@@ -104,7 +115,23 @@ int runRank(const Arguments& args, const Communicator& comm) {
     comm.barrier(); // every piece of this time is on disk: rank 0 lists them all for ParaView
     if (comm.rank() == 0) seriesOfSubdomains(processors).write(caseDir / "case.pvd");
   };
-  const RunOutcome outcome = solver.run(write, {}, [&](const Solver& s) { performance.record(s); });
+  // runTimeModifiable: rank 0 looks at system/controlDict after every step and, when it changed, every rank applies
+  // the text rank 0 read, so all of them change their settings after the same step.
+  ControlDictWatcher watcher(caseDir);
+  ControlSettings current{simulation.control, simulation.output};
+  const auto rereadControlDict = [&](Solver& s) {
+    if (!current.control.runTimeModifiable) return;
+    const std::optional<std::string> text = comm.rank() == 0 ? watcher.changedText() : std::nullopt;
+    if (comm.max(text ? 1.0 : 0.0) == 0.0) return;
+    const std::optional<ControlSettings> changed = watcher.settingsOf(comm.broadcast(text.value_or("")));
+    if (!changed) return;
+    const std::string changes = describeChanges(current, *changed);
+    if (!changes.empty()) log::info("system/controlDict changed (runTimeModifiable):\n" + changes);
+    current = *changed;
+    s.setTimeControl(current.control);
+    writer.setSettings(current.output);
+  };
+  const RunOutcome outcome = solver.run(write, rereadControlDict, [&](const Solver& s) { performance.record(s); });
   return outcome.end == RunOutcome::End::Signal ? 1 : 0;
 }
 

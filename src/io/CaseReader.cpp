@@ -106,9 +106,10 @@ SimulationCase readCase(const fs::path& caseDir, int threads, const fs::path& ti
       if (sameTime(t.time, control.startTime)) startName = t.name;
     throwIfIncomplete(timesDir, [&](double t) { return startName.empty() && sameTime(t, control.startTime); });
     if (startName.empty())
-      controlDictError("startTime", "no time directory " + timeName(control.startTime) +
-                                        (times.empty() ? "; run sampleParticles first"
-                                                       : "; the case has " + names + " (or use startFrom: latestTime)"));
+      controlDictError("startTime",
+                       "no time directory " + timeName(control.startTime) +
+                           (times.empty() ? "; run sampleParticles first"
+                                          : "; the case has " + names + " (or use startFrom: latestTime)"));
   }
   RunState start = readRunState(timesDir / startName);
   checkSampledRegions(caseDir, timesDir / startName); // before reading what may be gigabytes of particles
@@ -116,9 +117,19 @@ SimulationCase readCase(const fs::path& caseDir, int threads, const fs::path& ti
   // without the particles.
   const bool endTimeReached = control.endTimeReached(start.time);
   ParticleSystem particles =
-      endTimeReached ? ParticleSystem(radius) : readParticles(timesDir, startName, radius, materials);
-  return SimulationCase{control,   output, solver, fluid, std::move(materials), startName, start, std::move(particles),
-                        std::move(wallMotions), std::move(rigidBodies), endTimeReached};
+      endTimeReached ? ParticleSystem(radius)
+                     : readParticles(timesDir, startName, radius, materials, timesDir != caseDir); // a rank's share
+  return SimulationCase{control,
+                        output,
+                        solver,
+                        fluid,
+                        std::move(materials),
+                        startName,
+                        start,
+                        std::move(particles),
+                        std::move(wallMotions),
+                        std::move(rigidBodies),
+                        endTimeReached};
 }
 
 } // namespace poro

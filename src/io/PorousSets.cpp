@@ -133,7 +133,7 @@ ParticleSet mergePorousSets(const ParticleSystem& particles) {
 }
 
 void splitPorousSet(ParticleSet&& merged, const std::vector<PorousMaterial>& materials, ParticleSystem& into,
-                    const std::filesystem::path& file) {
+                    const std::filesystem::path& file, bool everyMaterial) {
   const std::string where = file.string() + ": ";
   if (materials.empty())
     throw InputError(where + "porous particles, but the case defines no porous material; create "
@@ -162,7 +162,7 @@ void splitPorousSet(ParticleSet&& merged, const std::vector<PorousMaterial>& mat
   merged.addInt(field::materialId, Restart); // io's own restart field, whatever role the file gave it
   const std::vector<FieldInfo> fields = merged.fields();
   for (std::size_t m = 0; m < materials.size(); ++m) {
-    if (slots[m].empty()) continue;
+    if (slots[m].empty() && !everyMaterial) continue;
     ParticleSet& set = into.add(materials[m].name, SetKind::Porous);
     for (const FieldInfo& f : fields) registerField(set, f);
     set.resize(slots[m].size());

@@ -26,11 +26,12 @@ ParticleSet mergePorousSets(const ParticleSystem& particles);
 
 /// Splits a set read from `file` (porous.vtp) by its Int field materialId into one set per material, named
 /// materials[id].name, kind Porous, appended to `into` in material order; materials without particles get
-/// no set. Each keeps the file order of its particles and every field of `merged` (Real, Vec3, Mat3, Int)
-/// with the same role; materialId becomes a Restart field. Throws InputError naming `file` when `materials`
-/// is empty (the case has no constant/porosityProperties), when the file has no Int field materialId, or
-/// when a materialId lies outside [0, materials.size()) (naming the first such particle's id).
+/// no set, unless `everyMaterial` (a rank's share of a decomposed case: every rank holds the same sets). Each keeps the
+/// file order of its particles and every field of `merged` (Real, Vec3, Mat3, Int) with the same role; materialId
+/// becomes a Restart field. Throws InputError naming `file` when `materials` is empty (the case has no
+/// constant/porosityProperties), when the file has no Int field materialId, or when a materialId lies outside [0,
+/// materials.size()) (naming the first such particle's id).
 void splitPorousSet(ParticleSet&& merged, const std::vector<PorousMaterial>& materials, ParticleSystem& into,
-                    const std::filesystem::path& file);
+                    const std::filesystem::path& file, bool everyMaterial = false);
 
 } // namespace poro

@@ -372,7 +372,7 @@ PvdSeries seriesOfTimeDirectories(const fs::path& caseDir) {
 }
 
 ParticleSystem readParticles(const fs::path& caseDir, const std::string& name, double particleRadius,
-                             const std::vector<PorousMaterial>& materials) {
+                             const std::vector<PorousMaterial>& materials, bool everyMaterial) {
   const fs::path dir = caseDir / name;
   if (!fs::is_directory(dir)) throw InputError(dir.string() + ": time directory not found");
   std::vector<fs::path> files;
@@ -403,7 +403,8 @@ ParticleSystem readParticles(const fs::path& caseDir, const std::string& name, d
       ParticleSet merged(kPorousSetName, SetKind::Porous);
       const auto arrays = readParticleSet(merged, file);
       const std::vector<std::int64_t> ids = merged.integer(field::id);
-      splitPorousSet(std::move(merged), materials, particles, file); // first: its materialId message is clearer
+      splitPorousSet(std::move(merged), materials, particles, file,
+                     everyMaterial); // first: its materialId message is clearer
       checkIds(file, arrays, ids);
     } else {
       ParticleSet& set = particles.add(file.stem().string(), kindOfFile(file));

@@ -53,8 +53,9 @@ RunState readRunState(const std::filesystem::path& timeDir);
 /// `particleRadius` other than the one uniform/time records, when the case has a readable system/particleDict, a
 /// missing file of a phase its regions sample (a deleted boundary.vtp or porous.vtp), and a materialId that names
 /// another material than the one uniform/sampling records it was sampled as (checkSampledMaterials).
+/// `everyMaterial`: a set for every material, empty where porous.vtp has none of it (a rank of a decomposed case).
 ParticleSystem readParticles(const std::filesystem::path& caseDir, const std::string& timeName, double particleRadius,
-                             const std::vector<PorousMaterial>& materials);
+                             const std::vector<PorousMaterial>& materials, bool everyMaterial = false);
 
 /// case.pvd as the time directories say, for a case that has lost it: every complete time directory (by time) with
 /// its particle files (fluid.vtp, porous.vtp, boundary.vtp, in that order) and the surfaces fluidSurface added.

@@ -110,8 +110,7 @@ void Elasticity::prepareBody(const StepContext& ctx, Body& body) {
     body.shear[s] = std::max(1.0 + material.shearSoftening * sat, kLameFloor) * mu;
     body.volumetric[s] = std::max(1.0 + material.volumeSoftening * sat, kLameFloor) * volumetricModulus;
     body.rotatedCorrection[s] = rl;
-    const Mat3 stress =
-        stressOf(strain, body.shear[s], body.volumetric[s]) - (bloating * sat) * Mat3::Identity();
+    const Mat3 stress = stressOf(strain, body.shear[s], body.volumetric[s]) - (bloating * sat) * Mat3::Identity();
     body.rhsStress[s] = stress * rl;
   });
 }
@@ -145,8 +144,10 @@ void Elasticity::addApply(const linalg::BlockVector& u, const linalg::BlockVecto
     const Vec3* v = u[body.part].data;
     Vec3* out = au[body.part].data;
     const std::size_t n = u[body.part].size;
-    // All stresses first, then the forces (METHOD.md §6.5.4).
-    parallel::forEach(n, [&](std::size_t s) {
+    // All stresses first, then the forces (METHOD.md §6.5.4). The forces of own particles read the stresses of their
+    // rest neighbours, ghosts among them in a parallel run: those are formed here too, from the ghosts' velocities
+    // that follow the own ones in the storage (GhostExchange.hpp; the set's size counts both).
+    parallel::forEach(ctx_->particles[body.set].size(), [&](std::size_t s) {
       Mat3 gradient = Mat3::Zero();
       for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
         const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));

@@ -2,8 +2,10 @@
 
 #include "parallel/HaloPattern.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <iterator>
 #include <numeric>
 #include <stdexcept>
 
@@ -57,6 +59,18 @@ std::vector<std::string> fieldsOf(const ParticleSet& set, const std::vector<std:
   return present;
 }
 
+/// Every rank's box from this rank's `mine` (allGather: every rank calls it in the same order).
+std::vector<Box> boxesOfRanks(const Box& mine, const Communicator& comm) {
+  const std::vector<double> flat =
+      comm.allGather({mine.lo.x(), mine.lo.y(), mine.lo.z(), mine.hi.x(), mine.hi.y(), mine.hi.z()});
+  std::vector<Box> boxes(static_cast<std::size_t>(comm.size()));
+  for (std::size_t q = 0; q < boxes.size(); ++q) {
+    boxes[q].lo = Vec3(flat[6 * q], flat[6 * q + 1], flat[6 * q + 2]);
+    boxes[q].hi = Vec3(flat[6 * q + 3], flat[6 * q + 4], flat[6 * q + 5]);
+  }
+  return boxes;
+}
+
 } // namespace
 
 std::size_t HaloExchange::ghosts(std::size_t set) const {
@@ -97,7 +111,7 @@ std::vector<std::vector<char>> HaloExchange::pack(const ParticleSystem& particle
   return messages;
 }
 
-void HaloExchange::build(ParticleSystem& particles, double reach, const Communicator& comm) {
+void HaloExchange::build(ParticleSystem& particles, double reach, const Communicator& comm, const RestHalo& rest) {
   dropGhosts(particles);
   holdsGhosts_ = true;
   const std::size_t ranks = static_cast<std::size_t>(comm.size());
@@ -107,17 +121,22 @@ void HaloExchange::build(ParticleSystem& particles, double reach, const Communic
     owned_[s] = particles[s].size();
     positions.push_back(&particles[s].x());
   }
-  const Box mine = boundingBox(positions);
-  const std::vector<double> flat =
-      comm.allGather({mine.lo.x(), mine.lo.y(), mine.lo.z(), mine.hi.x(), mine.hi.y(), mine.hi.z()});
-  std::vector<Box> boxes(ranks);
-  for (std::size_t q = 0; q < ranks; ++q) {
-    boxes[q].lo = Vec3(flat[6 * q], flat[6 * q + 1], flat[6 * q + 2]);
-    boxes[q].hi = Vec3(flat[6 * q + 3], flat[6 * q + 4], flat[6 * q + 5]);
-  }
+  const std::vector<Box> boxes = boxesOfRanks(boundingBox(positions), comm);
   lent_.assign(particles.size(), {});
-  for (std::size_t s = 0; s < particles.size(); ++s)
+  for (std::size_t s = 0; s < particles.size(); ++s) {
     lent_[s] = haloSendLists(particles[s].x(), boxes, comm.rank(), reach);
+    const double restReach = s < rest.reach.size() ? rest.reach[s] : 0.0;
+    if (restReach <= 0.0) continue;
+    const std::vector<Vec3>& restX = particles[s].vec3(rest.field);
+    const std::vector<Box> restBoxes = boxesOfRanks(boundingBox({&restX}), comm);
+    const std::vector<std::vector<Index>> byRest = haloSendLists(restX, restBoxes, comm.rank(), restReach);
+    for (std::size_t q = 0; q < ranks; ++q) { // both ascending: their union is too, each particle once
+      std::vector<Index> both;
+      std::set_union(lent_[s][q].begin(), lent_[s][q].end(), byRest[q].begin(), byRest[q].end(),
+                     std::back_inserter(both));
+      lent_[s][q] = std::move(both);
+    }
+  }
 
   const std::vector<std::vector<char>> received = comm.exchange(pack(particles, {}, true));
   received_.assign(particles.size(), std::vector<std::size_t>(ranks, 0));

@@ -3,7 +3,8 @@
 /// first, then copies of the particles other ranks lend it, which the neighbour search sees as ordinary read-only
 /// particles. build() lends every particle within the reach (support radius plus skin) of another subdomain
 /// (parallel/HaloPattern.hpp) with all its fields; refresh() then updates chosen fields of the same ghosts at the
-/// fixed points of a step where their owners changed them.
+/// fixed points of a step where their owners changed them. Sets whose particles are linked by their rest positions
+/// (elastic bodies: each particle's rest neighbours, METHOD.md §4.1) can lend by those too (RestHalo).
 
 #include "parallel/mpi/Communicator.hpp"
 #include "sph/ParticleSystem.hpp"
@@ -13,12 +14,21 @@
 
 namespace poro {
 
+/// Lending by rest position: set s also lends every particle whose `field` lies within reach[s] (0: none) of the box
+/// of the rest positions of that set's particles on the other rank. Two support radii give every rest neighbour of
+/// an own particle and every rest neighbour of those ghosts, so per-particle sums over rest neighbours are whole for
+/// every ghost an own particle reads, however the body has deformed since.
+struct RestHalo {
+  std::string field;
+  std::vector<double> reach; ///< per set
+};
+
 class HaloExchange {
 public:
   /// Drops the ghosts of the last build, then exchanges the particles within `reach` of each other's subdomain box and
   /// appends those received to their sets: in rank order, each rank's in its slot order. Every rank must hold the
-  /// same sets with the same fields.
-  void build(ParticleSystem& particles, double reach, const Communicator& comm);
+  /// same sets with the same fields, and the same `rest`.
+  void build(ParticleSystem& particles, double reach, const Communicator& comm, const RestHalo& rest = {});
   /// Copies the fields `names` (all fields when empty) of the lent particles into their ghosts on every rank.
   void refresh(ParticleSystem& particles, const std::vector<std::string>& names, const Communicator& comm) const;
   /// Removes the ghosts of the last build, once (before migration, output or a rebuild); then nothing until the next.

@@ -47,7 +47,7 @@ void RankGhosts::update(ParticleSystem& particles) {
     for (const double n : counts) msg << " " << static_cast<long long>(n);
     log::info(msg.str());
   }
-  halo_.build(particles, reach_, comm_);
+  halo_.build(particles, reach_, comm_, rest_);
 }
 
 } // namespace poro

@@ -15,9 +15,11 @@ namespace poro {
 
 class RankGhosts final : public GhostExchange {
 public:
-  /// `reach`: how far from a subdomain's box its ghosts lie (the support radius: the lists are searched every step).
-  RankGhosts(const Communicator& comm, Partition partition, const DecomposeSettings& settings, double reach)
-      : comm_(comm), partition_(std::move(partition)), settings_(settings), reach_(reach) {}
+  /// `reach`: how far from a subdomain's box its ghosts lie (the support radius: the lists are searched every step);
+  /// `rest`: the sets that lend by rest position too (elastic bodies).
+  RankGhosts(const Communicator& comm, Partition partition, const DecomposeSettings& settings, double reach,
+             RestHalo rest = {})
+      : comm_(comm), partition_(std::move(partition)), settings_(settings), reach_(reach), rest_(std::move(rest)) {}
 
   /// Re-partitions first when the heaviest rank's weight exceeds the mean by more than the threshold.
   void update(ParticleSystem& particles) override;
@@ -41,6 +43,7 @@ private:
   Partition partition_;
   DecomposeSettings settings_;
   double reach_;
+  RestHalo rest_;
   HaloExchange halo_;
 };
 
