@@ -4,6 +4,7 @@
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 
+#include <fstream>
 #include <sstream>
 
 namespace poro {
@@ -20,10 +21,14 @@ fs::file_time_type modificationTime(const fs::path& file) {
 
 const char* toString(TimeControl::StopAt s) {
   switch (s) {
-  case TimeControl::StopAt::EndTime: return "endTime";
-  case TimeControl::StopAt::WriteNow: return "writeNow";
-  case TimeControl::StopAt::NoWriteNow: return "noWriteNow";
-  case TimeControl::StopAt::NextWrite: return "nextWrite";
+  case TimeControl::StopAt::EndTime:
+    return "endTime";
+  case TimeControl::StopAt::WriteNow:
+    return "writeNow";
+  case TimeControl::StopAt::NoWriteNow:
+    return "noWriteNow";
+  case TimeControl::StopAt::NextWrite:
+    return "nextWrite";
   }
   return "?";
 }
@@ -36,30 +41,49 @@ template <class T> void compare(std::ostringstream& out, const char* key, const 
   if (!(before == after)) out << "  " << key << ' ' << before << " -> " << after << '\n';
 }
 
-} // namespace
-
-ControlSettings readControlDict(const fs::path& caseDir) {
-  const Dictionary dict = Dictionary::read((caseDir / "system" / "controlDict").string());
+ControlSettings settingsFrom(const Dictionary& dict) {
   ControlSettings settings{TimeControl::read(dict), OutputSettings::read(dict)};
   dict.checkUnknownKeys();
   return settings;
 }
 
+} // namespace
+
+ControlSettings readControlDict(const fs::path& caseDir) {
+  return settingsFrom(Dictionary::read((caseDir / "system" / "controlDict").string()));
+}
+
 ControlDictWatcher::ControlDictWatcher(const fs::path& caseDir)
     : caseDir_(caseDir), file_(caseDir / "system" / "controlDict"), seen_(modificationTime(file_)) {}
 
-std::optional<ControlSettings> ControlDictWatcher::poll() {
+std::optional<std::string> ControlDictWatcher::changedText() {
   const auto time = modificationTime(file_);
   if (time == seen_) return std::nullopt;
   seen_ = time;
+  std::ifstream in(file_, std::ios::binary);
+  if (!in) {
+    log::warning(file_.string() + " changed but cannot be read; the run goes on with its current settings");
+    return std::nullopt;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::optional<ControlSettings> ControlDictWatcher::settingsOf(const std::string& text) const {
   try {
-    return readControlDict(caseDir_);
+    return settingsFrom(Dictionary::parse(text, file_.string()));
   } catch (const InputError& e) {
     log::warning(std::string("system/controlDict changed but is not valid; the run goes on with its current "
                              "settings until the file is corrected:\n") +
                  e.what());
     return std::nullopt;
   }
+}
+
+std::optional<ControlSettings> ControlDictWatcher::poll() {
+  const std::optional<std::string> text = changedText();
+  return text ? settingsOf(*text) : std::nullopt;
 }
 
 std::string describeChanges(const ControlSettings& before, const ControlSettings& after) {

@@ -28,6 +28,11 @@ public:
   /// is reported as a warning and ignored once (the run keeps its settings), so a typo made while a long run
   /// goes on cannot end it.
   std::optional<ControlSettings> poll();
+  /// poll() in two halves, for a parallel run whose rank 0 looks and shares the text with every rank, so that all
+  /// of them apply the same settings after the same step: the file's text when it changed since the last look, and
+  /// the settings of such a text (nothing, with the warning above, when it does not validate).
+  std::optional<std::string> changedText();
+  std::optional<ControlSettings> settingsOf(const std::string& text) const;
 
 private:
   std::filesystem::path caseDir_, file_;

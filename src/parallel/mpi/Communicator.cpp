@@ -57,6 +57,15 @@ std::vector<double> Communicator::allGather(const std::vector<double>& values) c
   return all;
 }
 
+std::string Communicator::broadcast(const std::string& text, int root) const {
+  long long size = rank_ == root ? static_cast<long long>(text.size()) : 0;
+  check(MPI_Bcast(&size, 1, MPI_LONG_LONG, root, MPI_COMM_WORLD), "MPI_Bcast");
+  if (size > INT_MAX) throw std::runtime_error("a broadcast above 2 GB");
+  std::string result = rank_ == root ? text : std::string(static_cast<std::size_t>(size), '\0');
+  check(MPI_Bcast(result.data(), static_cast<int>(size), MPI_CHAR, root, MPI_COMM_WORLD), "MPI_Bcast");
+  return result;
+}
+
 std::vector<std::vector<char>> Communicator::exchange(const std::vector<std::vector<char>>& toRank) const {
   if (toRank.size() != static_cast<std::size_t>(size_)) throw std::logic_error("Communicator::exchange: one per rank");
   std::vector<std::int64_t> sendCounts(toRank.size()), receiveCounts(toRank.size());

@@ -34,6 +34,8 @@ public:
   /// Sends toRank[q] to rank q (toRank has size() entries, its own ignored) and returns, per rank, what that rank sent
   /// here. Empty messages cost no message.
   std::vector<std::vector<char>> exchange(const std::vector<std::vector<char>>& toRank) const;
+  /// Rank `root`'s `text` on every rank.
+  std::string broadcast(const std::string& text, int root = 0) const;
   void barrier() const;
   /// Stops every rank (MPI_Abort): for an error that one rank met and the others cannot learn of.
   [[noreturn]] void abort(int code) const;
