@@ -107,7 +107,7 @@ int runRank(const Arguments& args, const Communicator& comm) {
   TimeWriter writer(mine, simulation.output, simulation.startName);
   writer.setMovingWalls(movingWalls);
 
-  SolverPerformanceLog performance(mine, simulation.startName);
+  SolverPerformanceLog performance(mine, simulation.startName, &ghosts);
   signals::installStopHandlers(); // kill -TERM on the ranks: every rank stops after the same step and writes it
   const auto write = [&](const Solver& s) {
     writer.setUniformFile("partition", ghosts.partition().text()); // the cut of this time (it may have changed)

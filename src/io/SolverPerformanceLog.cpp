@@ -11,13 +11,14 @@ namespace poro {
 namespace fs = std::filesystem;
 
 const std::vector<std::string>& SolverPerformanceLog::phaseColumns() {
-  static const std::vector<std::string> phases{"search", "densities", "implicit", "pressure",
+  static const std::vector<std::string> phases{"search",    "densities", "implicit", "pressure",
                                                "integrate", "health",    "output"};
   return phases;
 }
 
-SolverPerformanceLog::SolverPerformanceLog(const fs::path& caseDir, const std::string& startName)
-    : file_(caseDir / "postProcessing" / "solverPerformance" / startName / "solverPerformance.csv"),
+SolverPerformanceLog::SolverPerformanceLog(const fs::path& caseDir, const std::string& startName,
+                                           const GhostExchange* ranks)
+    : file_(caseDir / "postProcessing" / "solverPerformance" / startName / "solverPerformance.csv"), ranks_(ranks),
       previous_(phaseColumns().size(), 0.0) {
   std::error_code ec;
   fs::create_directories(file_.parent_path(), ec);
@@ -33,6 +34,7 @@ SolverPerformanceLog::SolverPerformanceLog(const fs::path& caseDir, const std::s
   out_ << "step,time_s,deltaT_s,maxSpeed_m_per_s,maxFluidDensity_rho0,pressureIterations,pressureConverged,"
           "densityErrorMean_pct,densityErrorMax_pct,cgIterations,cgConverged,cgResidual";
   for (const auto& phase : phaseColumns()) out_ << ',' << phase << "_s";
+  if (ranks_) out_ << ",particles,ghosts,imbalance,haloExchange_s";
   out_ << '\n';
 }
 
@@ -56,6 +58,12 @@ void SolverPerformanceLog::record(const Solver& solver) {
     const double total = phaseSeconds(solver, phases[k]);
     out_ << ',' << total - previous_[k];
     previous_[k] = total;
+  }
+  if (ranks_) {
+    const GhostExchange::Load load = ranks_->load();
+    out_ << ',' << load.particles << ',' << load.ghosts << ',' << load.imbalance << ','
+         << load.seconds - previousExchange_;
+    previousExchange_ = load.seconds;
   }
   out_ << '\n';
   out_.flush(); // a killed run keeps its rows

@@ -28,6 +28,18 @@ public:
   virtual double max(double value) const = 0;
   virtual int rank() const = 0;
   virtual int ranks() const = 0;
+
+  /// This rank's load as of the last update, what the exchanges have cost it so far, and the balance over the run.
+  struct Load {
+    std::size_t particles = 0;     ///< own, every set
+    std::size_t ghosts = 0;        ///< every set
+    double imbalance = 0.0;        ///< the heaviest rank's weight over the mean, minus 1
+    double seconds = 0.0;          ///< wall time in update, refresh and the reductions since the start [s]
+    double meanImbalance = 0.0;    ///< over every update so far
+    double largestImbalance = 0.0; ///< over every update so far
+    std::size_t repartitions = 0;  ///< new cuts so far
+  };
+  virtual Load load() const = 0;
 };
 
 } // namespace poro

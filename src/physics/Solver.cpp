@@ -53,6 +53,29 @@ std::string formatDuration(double seconds) {
   return out.str();
 }
 
+/// The ranks' share of a parallel run for its closing summary: load, the exchanges' share of the time loop and the
+/// balance over the run (collective: every rank calls it).
+std::string rankSummary(const GhostExchange& ranks, double loopSeconds) {
+  const GhostExchange::Load load = ranks.load();
+  const double n = static_cast<double>(ranks.ranks());
+  const auto meanAndLargest = [&](double value, int decimals, const char* unit) {
+    std::ostringstream out;
+    out << std::fixed << std::setprecision(decimals) << ranks.sum(value) / n << unit << " mean, " << ranks.max(value)
+        << unit << " largest";
+    return out.str();
+  };
+  const double share = loopSeconds > 0.0 ? 100.0 * load.seconds / loopSeconds : 0.0;
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(1) << "Ranks: " << ranks.ranks() << "; particles per rank "
+      << meanAndLargest(static_cast<double>(load.particles), 0, "") << "; ghosts per rank "
+      << meanAndLargest(static_cast<double>(load.ghosts), 0, "")
+      << "\n  halo exchanges and reductions: " << meanAndLargest(share, 1, " %")
+      << " of a rank's time loop\n  imbalance (heaviest rank's weight over the mean): " << 100.0 * load.meanImbalance
+      << " % mean over the steps, " << 100.0 * load.largestImbalance << " % largest; re-partitioned "
+      << load.repartitions << " times\n";
+  return out.str();
+}
+
 } // namespace
 
 Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vector<PorousMaterial> materials,
@@ -730,6 +753,7 @@ RunOutcome Solver::run(const Writer& write, const Monitor& afterStep, const Obse
   if (settings_.searchSkin > 0)
     summary << "Neighbour lists: " << search_.gridSearches() << " grid searches in " << search_.updates()
             << " steps (skin " << std::setprecision(2) << settings_.searchSkin << " H)\n";
+  if (ghosts_) summary << rankSummary(*ghosts_, total);
   log::info(summary.str());
   if (outcome.end != RunOutcome::End::Signal) log::info("End\n");
   return outcome;

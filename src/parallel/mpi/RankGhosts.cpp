@@ -3,6 +3,7 @@
 #include "core/Log.hpp"
 #include "parallel/mpi/Migration.hpp"
 
+#include <algorithm>
 #include <iomanip>
 #include <sstream>
 
@@ -16,6 +17,7 @@ double RankGhosts::weightOf(const ParticleSystem& particles) const {
 }
 
 void RankGhosts::update(ParticleSystem& particles) {
+  const Stopwatch watch(seconds_);
   halo_.dropGhosts(particles);
   migrate(particles, partition_, comm_);
   // The balance after the particles went where the cut sends them; a new cut is a function of the positions alone,
@@ -23,7 +25,7 @@ void RankGhosts::update(ParticleSystem& particles) {
   const double mine = weightOf(particles);
   const double heaviest = comm_.max(mine);
   const double mean = comm_.sum(mine) / comm_.size();
-  const double imbalance = mean > 0.0 ? heaviest / mean - 1.0 : 0.0;
+  double imbalance = mean > 0.0 ? heaviest / mean - 1.0 : 0.0;
   // Past what the cut itself gave (a cut never splits a lattice layer, so a small subdomain can not do better).
   if (partition_.imbalanceAtCut() < 0.0) partition_.setImbalanceAtCut(imbalance);
   if (imbalance > partition_.imbalanceAtCut() + settings_.rebalanceThreshold) {
@@ -38,6 +40,8 @@ void RankGhosts::update(ParticleSystem& particles) {
         static_cast<std::size_t>(comm_.sum(static_cast<double>(migrate(particles, partition_, comm_))));
     const double after = comm_.max(weightOf(particles)) / mean - 1.0;
     partition_.setImbalanceAtCut(after);
+    imbalance = after;
+    ++repartitions_;
     const std::vector<double> counts = comm_.allGather({static_cast<double>(particles.particleCount())});
     std::ostringstream msg;
     msg << std::setprecision(3) << "Re-partitioned: the heaviest rank was " << 100.0 * imbalance
@@ -48,6 +52,15 @@ void RankGhosts::update(ParticleSystem& particles) {
     log::info(msg.str());
   }
   halo_.build(particles, reach_, comm_, rest_);
+  particles_ = ghosts_ = 0;
+  for (std::size_t s = 0; s < particles.size(); ++s) {
+    particles_ += halo_.owned(s);
+    ghosts_ += halo_.ghosts(s);
+  }
+  imbalance_ = imbalance;
+  imbalanceSum_ += imbalance;
+  largestImbalance_ = std::max(largestImbalance_, imbalance);
+  ++updates_;
 }
 
 } // namespace poro

@@ -3,6 +3,7 @@
 /// anew when the balance drifts past decomposeParDict's rebalanceThreshold, the halo of HaloExchange and the
 /// communicator's reductions.
 
+#include "core/Timer.hpp"
 #include "parallel/DecomposeSettings.hpp"
 #include "parallel/Partition.hpp"
 #include "parallel/mpi/Communicator.hpp"
@@ -26,16 +27,40 @@ public:
   void drop(ParticleSystem& particles) override { halo_.dropGhosts(particles); }
   std::size_t owned(std::size_t set) const override { return halo_.owned(set); }
   void refresh(ParticleSystem& particles, const std::vector<std::string>& names) const override {
+    const Stopwatch watch(seconds_);
     halo_.refresh(particles, names, comm_);
   }
-  double sum(double value) const override { return comm_.sum(value); }
-  double max(double value) const override { return comm_.max(value); }
+  double sum(double value) const override {
+    const Stopwatch watch(seconds_);
+    return comm_.sum(value);
+  }
+  double max(double value) const override {
+    const Stopwatch watch(seconds_);
+    return comm_.max(value);
+  }
   int rank() const override { return comm_.rank(); }
   int ranks() const override { return comm_.size(); }
 
+  Load load() const override {
+    const double mean = updates_ ? imbalanceSum_ / static_cast<double>(updates_) : 0.0;
+    return {particles_, ghosts_, imbalance_, seconds_, mean, largestImbalance_, repartitions_};
+  }
   const Partition& partition() const { return partition_; }
 
 private:
+  /// Adds the wall time of its scope to `total` (the exchanges' share of a step).
+  class Stopwatch {
+  public:
+    explicit Stopwatch(double& total) : total_(total) {}
+    ~Stopwatch() { total_ += timer_.seconds(); }
+    Stopwatch(const Stopwatch&) = delete;
+    Stopwatch& operator=(const Stopwatch&) = delete;
+
+  private:
+    double& total_;
+    Timer timer_;
+  };
+
   /// This rank's weight (decomposeParDict's weights summed over its particles).
   double weightOf(const ParticleSystem& particles) const;
 
@@ -45,6 +70,9 @@ private:
   double reach_;
   RestHalo rest_;
   HaloExchange halo_;
+  mutable double seconds_ = 0.0;
+  std::size_t particles_ = 0, ghosts_ = 0, updates_ = 0, repartitions_ = 0;
+  double imbalance_ = 0.0, imbalanceSum_ = 0.0, largestImbalance_ = 0.0;
 };
 
 } // namespace poro
