@@ -95,7 +95,10 @@ int runRank(const Arguments& args, const Communicator& comm) {
   if (partition.parts() != comm.size())
     throw InputError(saved.string() + ": a partition into " + std::to_string(partition.parts()) + " parts for " +
                      std::to_string(comm.size()) + " ranks");
-  RankGhosts ghosts(comm, std::move(partition), settings, simulation.particles.supportRadius(), restHaloOf(simulation));
+  // Ghosts within the support radius plus the Verlet skin: the lists are searched afresh only when a particle has moved
+  // half the skin since the last migration, and every pair within H until then was within H + skin at it.
+  const double reach = simulation.particles.supportRadius() * (1.0 + simulation.solver.searchSkin);
+  RankGhosts ghosts(comm, std::move(partition), settings, reach, restHaloOf(simulation));
   const bool movingWalls = !simulation.wallMotions.empty();
   Solver solver(std::move(simulation.particles), simulation.fluid, std::move(simulation.materials), simulation.solver,
                 simulation.control, simulation.start, std::move(simulation.wallMotions),

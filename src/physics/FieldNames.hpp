@@ -16,6 +16,9 @@ inline constexpr const char* materialId = "materialId"; ///< porous: index of th
 inline constexpr const char* contactPressure = "contactPressure";
 /// compressible porous: the largest wall share D the particle may reach (WallContact.hpp)
 inline constexpr const char* wallContactLimit = "wallContactLimit";
+/// parallel runs: where the particle stood when the ranks last migrated and searched afresh; the Verlet skin is
+/// reused, without migrating, until some particle has moved half the skin from it (Solver::searchNeighbours) [m]
+inline constexpr const char* searchOrigin = "searchOrigin";
 // Output only.
 inline constexpr const char* density = "density";             ///< rho [kg/m^3]
 inline constexpr const char* pressure = "pressure";           ///< p = pi rho^2 / rho^max [Pa]

@@ -19,6 +19,10 @@ public:
   virtual void update(ParticleSystem& particles) = 0;
   /// Removes the ghosts: the sets hold this rank's own particles only (output, health checks, the next update).
   virtual void drop(ParticleSystem& particles) = 0;
+  /// Ghosts again without migrating: where every rank still holds its own particles as at the last update, the same
+  /// ghosts in the same slots with every field from their owners (true); otherwise ghosts anew by the current
+  /// positions (false). Every rank gets the same answer.
+  virtual bool reattach(ParticleSystem& particles) = 0;
   /// Set s's own particles are slots [0, owned(s)); the ghosts follow (after update, until drop).
   virtual std::size_t owned(std::size_t set) const = 0;
   /// Copies the fields `names` (every field when empty) of the own particles into their ghosts on other ranks.
@@ -35,8 +39,8 @@ public:
     std::size_t ghosts = 0;        ///< every set
     double imbalance = 0.0;        ///< the heaviest rank's weight over the mean, minus 1
     double seconds = 0.0;          ///< wall time in update, refresh and the reductions since the start [s]
-    double meanImbalance = 0.0;    ///< over every update so far
-    double largestImbalance = 0.0; ///< over every update so far
+    double meanImbalance = 0.0;    ///< over every update (migration) so far
+    double largestImbalance = 0.0; ///< over every update (migration) so far
     std::size_t repartitions = 0;  ///< new cuts so far
   };
   virtual Load load() const = 0;

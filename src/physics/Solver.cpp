@@ -71,7 +71,7 @@ std::string rankSummary(const GhostExchange& ranks, double loopSeconds) {
       << meanAndLargest(static_cast<double>(load.ghosts), 0, "")
       << "\n  halo exchanges and reductions: " << meanAndLargest(share, 1, " %")
       << " of a rank's time loop\n  imbalance (heaviest rank's weight over the mean): " << 100.0 * load.meanImbalance
-      << " % mean over the steps, " << 100.0 * load.largestImbalance << " % largest; re-partitioned "
+      << " % mean over the migrations, " << 100.0 * load.largestImbalance << " % largest; re-partitioned "
       << load.repartitions << " times\n";
   return out.str();
 }
@@ -153,7 +153,14 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
   setUpRigidBodies(std::move(rigidBodies));
   implicit_.collectWallReactions(!rigidBodies_.empty());
   placeWalls(state_.time, state_.nextDeltaT);
-  if (ghosts_) computeWallVolumesWithGhosts();
+  if (ghosts_) { // a restart reads the origins back, so it keeps the skin (and migrates) where the run it continues did
+    for (std::size_t s = 0; s < particles_.size(); ++s) {
+      const bool restart = particles_[s].has(field::searchOrigin);
+      auto& origin = particles_[s].addVec3(field::searchOrigin, Restart);
+      if (!restart) std::fill(origin.begin(), origin.end(), Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
+    }
+    computeWallVolumesWithGhosts();
+  }
   const auto overRanks = [this](Vec3& lo, Vec3& hi) {
     for (int a = 0; a < 3; ++a) {
       lo[a] = -ghosts_->max(-lo[a]);
@@ -375,7 +382,7 @@ StepContext Solver::context(double deltaT) {
 
 void Solver::computeWallVolumesWithGhosts() {
   GhostExchange& ghosts = *ghosts_;
-  ghosts.update(particles_);
+  ghosts.reattach(particles_); // no migration: a restart keeps the owners of the run it continues (searchOrigin)
   // As setUpBoundarySet computes them: moving walls at their rest positions (a body's own neighbours are the same
   // there as where it stands now), now with the ghost walls a subdomain's edge needs.
   for (std::size_t k : boundarySets_) {
@@ -395,9 +402,20 @@ void Solver::searchNeighbours(double deltaT) {
     for (std::size_t a : dynamicSets_) particles_[a].permute(search_.mortonOrder(particles_[a].x()));
     search_.invalidate();
   }
-  if (ghosts_) { // particles change ranks and ghosts come anew every step: the lists are searched afresh
-    ghosts_->update(particles_);
-    search_.invalidate();
+  // How far the fastest particle (walls included) moves this step decides whether the Verlet skin pays. It is
+  // measured afresh rather than taken from the last step's report: a restarted run has no last step, and must
+  // choose as the uninterrupted one did.
+  const double largestStep = maxSpeed() * deltaT;
+  if (ghosts_) {
+    // Between migrations the ranks keep their own particles in their slots and take the same ghosts again, so the
+    // skin's candidates stay valid; a fresh halo after a restart lists the same neighbours in the same order.
+    if (!sortNow && skinHoldsOnEveryRank(largestStep)) {
+      if (!ghosts_->reattach(particles_)) search_.invalidate();
+    } else {
+      ghosts_->update(particles_);
+      markSearchOrigins();
+      search_.invalidate();
+    }
   }
   std::vector<const std::vector<Vec3>*> positions;
   std::vector<std::vector<bool>> wanted(particles_.size(), std::vector<bool>(particles_.size(), false));
@@ -406,10 +424,31 @@ void Solver::searchNeighbours(double deltaT) {
     for (std::size_t b : dynamicSets_) wanted[a][b] = true;
     for (std::size_t k : boundarySets_) wanted[a][k] = true;
   }
-  // How far the fastest particle (walls included) moves this step decides whether the Verlet skin pays. It is
-  // measured afresh rather than taken from the last step's report: a restarted run has no last step, and must
-  // choose as the uninterrupted one did.
-  search_.update(positions, wanted, maxSpeed() * deltaT);
+  search_.update(positions, wanted, largestStep);
+}
+
+bool Solver::skinHoldsOnEveryRank(double largestStep) const {
+  const double skin = settings_.searchSkin * particles_.supportRadius();
+  if (!search_.skinPays(largestStep)) return false;
+  double moved = 0.0; // NaN-proof: an origin never set (a start or a serial time directory) is infinitely far
+  for (std::size_t s = 0; s < particles_.size(); ++s) {
+    const auto& x = particles_[s].x();
+    const auto& origin = particles_[s].vec3(field::searchOrigin);
+    moved = std::max(moved, parallel::max(x.size(), 0.0, [&](std::size_t i) {
+                       const double d = (x[i] - origin[i]).norm();
+                       return d < INFINITY ? d : INFINITY;
+                     }));
+  }
+  // As NeighbourSearch: two particles that each moved less than skin / 2 since are still within reach.
+  return 2.0 * ghosts_->max(moved) < skin;
+}
+
+void Solver::markSearchOrigins() {
+  for (std::size_t s = 0; s < particles_.size(); ++s) {
+    auto& origin = particles_[s].vec3(field::searchOrigin);
+    const auto& x = particles_[s].x();
+    std::copy(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(ghosts_->owned(s)), origin.begin());
+  }
 }
 
 StepContext Solver::beginStep(double deltaT) {

@@ -94,6 +94,11 @@ public:
 private:
   StepContext context(double deltaT);
   void searchNeighbours(double deltaT);
+  /// Parallel runs: whether the Verlet skin still holds over every rank since the last migration (searchOrigin), so
+  /// that the ranks keep their particles and ghosts instead of migrating and searching afresh.
+  bool skinHoldsOnEveryRank(double largestStep) const;
+  /// Parallel runs: the own particles' searchOrigin, at a migration.
+  void markSearchOrigins();
   double maxSpeed() const;
   void measureFluidDensity();
   void logProgress(double elapsed, double startTime) const;

@@ -106,9 +106,10 @@ void NeighbourSearch::assemble(std::size_t n, NeighbourList& list, const AppendN
   std::uint64_t pairs = 0;
   for (const std::vector<Index>& out : chunkIndices) pairs += out.size();
   if (pairs > std::numeric_limits<std::uint32_t>::max())
-    throw NumericalError("neighbour search: " + std::to_string(pairs) + " pairs in one list, more than the " +
-                         std::to_string(std::numeric_limits<std::uint32_t>::max()) +
-                         " its 32-bit offsets hold (some hundred million particles in one set); decompose the case (mpirun, -parallel)");
+    throw NumericalError(
+        "neighbour search: " + std::to_string(pairs) + " pairs in one list, more than the " +
+        std::to_string(std::numeric_limits<std::uint32_t>::max()) +
+        " its 32-bit offsets hold (some hundred million particles in one set); decompose the case (mpirun, -parallel)");
   parallel::exclusiveScan(counts, list.offsets_);
   memory::resizeForRefill(list.indices_, static_cast<std::size_t>(list.offsets_[n]));
   parallel::forEach(chunks, [&](std::size_t chunk) {
@@ -121,7 +122,7 @@ void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positi
                              const std::vector<std::vector<bool>>& wanted, double largestStep) {
   sets_ = positions.size();
   ++updates_;
-  if (skin_ == 0.0 || kStepsPerSkin * largestStep >= skin_) {
+  if (!skinPays(largestStep)) {
     // A fast flow would cross the skin every step or two, and the grid search at H + skin would cost more
     // than it saves: search at H, in stencil order (the mode is a function of the state, so a restarted run
     // picks the same one).
@@ -161,6 +162,8 @@ void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positi
       });
     }
 }
+
+bool NeighbourSearch::skinPays(double largestStep) const { return skin_ > 0.0 && kStepsPerSkin * largestStep < skin_; }
 
 bool NeighbourSearch::mustRebuild(const std::vector<const std::vector<Vec3>*>& positions,
                                   const std::vector<std::vector<bool>>& wanted) const {

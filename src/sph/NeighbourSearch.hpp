@@ -49,6 +49,9 @@ public:
   void update(const std::vector<const std::vector<Vec3>*>& positions, const std::vector<std::vector<bool>>& wanted,
               double largestStep = 0.0);
 
+  /// Whether update() uses the skin for a step of `largestStep` (else it searches at H in stencil order).
+  bool skinPays(double largestStep) const;
+
   /// The list of set a against set b (empty if it was not requested).
   const NeighbourList& list(std::size_t a, std::size_t b) const { return lists_[a * sets_ + b]; }
 

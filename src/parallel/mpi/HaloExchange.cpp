@@ -90,6 +90,19 @@ void HaloExchange::dropGhosts(ParticleSystem& particles) {
   holdsGhosts_ = false;
 }
 
+bool HaloExchange::restorable(const ParticleSystem& particles) const {
+  if (holdsGhosts_ || lent_.empty() || owned_.size() != particles.size()) return false;
+  for (std::size_t s = 0; s < particles.size(); ++s)
+    if (particles[s].size() != owned_[s]) return false;
+  return true;
+}
+
+void HaloExchange::restore(ParticleSystem& particles, const Communicator& comm) {
+  for (std::size_t s = 0; s < particles.size(); ++s) particles[s].resize(owned_[s] + ghosts(s));
+  holdsGhosts_ = true;
+  refresh(particles, {}, comm);
+}
+
 std::vector<std::vector<char>> HaloExchange::pack(const ParticleSystem& particles,
                                                   const std::vector<std::string>& names, bool withCounts) const {
   const std::size_t ranks = lent_.empty() ? 0 : lent_.front().size();

@@ -33,6 +33,11 @@ public:
   void refresh(ParticleSystem& particles, const std::vector<std::string>& names, const Communicator& comm) const;
   /// Removes the ghosts of the last build, once (before migration, output or a rebuild); then nothing until the next.
   void dropGhosts(ParticleSystem& particles);
+  /// Whether this rank's sets hold exactly the own particles of the last build, without its ghosts (dropped).
+  bool restorable(const ParticleSystem& particles) const;
+  /// Appends the ghosts of the last build again, in the same slots, with every field from their owners (every rank
+  /// restorable: no migration, reordering or removal since the build).
+  void restore(ParticleSystem& particles, const Communicator& comm);
 
   /// Set s holds its own particles in slots [0, owned(s)) and ghosts in [owned(s), owned(s) + ghosts(s)).
   std::size_t owned(std::size_t set) const { return owned_.at(set); }

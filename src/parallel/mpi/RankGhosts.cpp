@@ -40,8 +40,6 @@ void RankGhosts::update(ParticleSystem& particles) {
         static_cast<std::size_t>(comm_.sum(static_cast<double>(migrate(particles, partition_, comm_))));
     const double after = comm_.max(weightOf(particles)) / mean - 1.0;
     partition_.setImbalanceAtCut(after);
-    imbalance = after;
-    ++repartitions_;
     const std::vector<double> counts = comm_.allGather({static_cast<double>(particles.particleCount())});
     std::ostringstream msg;
     msg << std::setprecision(3) << "Re-partitioned: the heaviest rank was " << 100.0 * imbalance
@@ -50,17 +48,34 @@ void RankGhosts::update(ParticleSystem& particles) {
         << " particles moved; particles per rank:";
     for (const double n : counts) msg << " " << static_cast<long long>(n);
     log::info(msg.str());
+    imbalance = after;
+    ++repartitions_;
   }
+  imbalance_ = imbalance;
+  imbalanceSum_ += imbalance;
+  largestImbalance_ = std::max(largestImbalance_, imbalance);
+  ++updates_;
+  buildHalo(particles);
+}
+
+bool RankGhosts::reattach(ParticleSystem& particles) {
+  const Stopwatch watch(seconds_);
+  if (comm_.min(halo_.restorable(particles) ? 1.0 : 0.0) > 0.0) {
+    halo_.restore(particles, comm_);
+    return true;
+  }
+  halo_.dropGhosts(particles);
+  buildHalo(particles);
+  return false;
+}
+
+void RankGhosts::buildHalo(ParticleSystem& particles) {
   halo_.build(particles, reach_, comm_, rest_);
   particles_ = ghosts_ = 0;
   for (std::size_t s = 0; s < particles.size(); ++s) {
     particles_ += halo_.owned(s);
     ghosts_ += halo_.ghosts(s);
   }
-  imbalance_ = imbalance;
-  imbalanceSum_ += imbalance;
-  largestImbalance_ = std::max(largestImbalance_, imbalance);
-  ++updates_;
 }
 
 } // namespace poro

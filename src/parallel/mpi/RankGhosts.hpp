@@ -16,7 +16,7 @@ namespace poro {
 
 class RankGhosts final : public GhostExchange {
 public:
-  /// `reach`: how far from a subdomain's box its ghosts lie (the support radius: the lists are searched every step);
+  /// `reach`: how far from a subdomain's box its ghosts lie (the support radius plus the Verlet skin);
   /// `rest`: the sets that lend by rest position too (elastic bodies).
   RankGhosts(const Communicator& comm, Partition partition, const DecomposeSettings& settings, double reach,
              RestHalo rest = {})
@@ -25,6 +25,7 @@ public:
   /// Re-partitions first when the heaviest rank's weight exceeds the mean by more than the threshold.
   void update(ParticleSystem& particles) override;
   void drop(ParticleSystem& particles) override { halo_.dropGhosts(particles); }
+  bool reattach(ParticleSystem& particles) override;
   std::size_t owned(std::size_t set) const override { return halo_.owned(set); }
   void refresh(ParticleSystem& particles, const std::vector<std::string>& names) const override {
     const Stopwatch watch(seconds_);
@@ -61,6 +62,8 @@ private:
     Timer timer_;
   };
 
+  /// The halo of the current positions; counts the load.
+  void buildHalo(ParticleSystem& particles);
   /// This rank's weight (decomposeParDict's weights summed over its particles).
   double weightOf(const ParticleSystem& particles) const;
 
