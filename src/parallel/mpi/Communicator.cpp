@@ -96,6 +96,32 @@ std::vector<std::vector<char>> Communicator::exchange(const std::vector<std::vec
   return received;
 }
 
+void Communicator::exchangeKnown(const std::vector<std::vector<char>>& toRank, const std::vector<std::size_t>& expected,
+                                 std::vector<std::vector<char>>& received) const {
+  if (toRank.size() != static_cast<std::size_t>(size_) || expected.size() != toRank.size())
+    throw std::logic_error("Communicator::exchangeKnown: one per rank");
+  received.resize(toRank.size());
+  std::vector<MPI_Request> requests;
+  requests.reserve(2 * toRank.size());
+  for (std::size_t q = 0; q < toRank.size(); ++q) {
+    if (static_cast<int>(q) == rank_ || expected[q] == 0) continue;
+    if (expected[q] > INT_MAX || toRank[q].size() > INT_MAX) throw std::runtime_error("a halo message above 2 GB");
+    received[q].resize(expected[q]); // the same size as the last time: no allocation, no clearing
+    requests.emplace_back();
+    check(MPI_Irecv(received[q].data(), static_cast<int>(expected[q]), MPI_CHAR, static_cast<int>(q), 0, MPI_COMM_WORLD,
+                    &requests.back()),
+          "MPI_Irecv");
+  }
+  for (std::size_t q = 0; q < toRank.size(); ++q) {
+    if (static_cast<int>(q) == rank_ || toRank[q].empty()) continue;
+    requests.emplace_back();
+    check(MPI_Isend(toRank[q].data(), static_cast<int>(toRank[q].size()), MPI_CHAR, static_cast<int>(q), 0,
+                    MPI_COMM_WORLD, &requests.back()),
+          "MPI_Isend");
+  }
+  check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE), "MPI_Waitall");
+}
+
 void Communicator::barrier() const { check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier"); }
 
 void Communicator::abort(int code) const {

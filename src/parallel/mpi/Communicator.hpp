@@ -34,6 +34,10 @@ public:
   /// Sends toRank[q] to rank q (toRank has size() entries, its own ignored) and returns, per rank, what that rank sent
   /// here. Empty messages cost no message.
   std::vector<std::vector<char>> exchange(const std::vector<std::vector<char>>& toRank) const;
+  /// As exchange(), where every rank knows how many bytes each other rank sends it (`expected`, size() entries), so
+  /// no sizes go first; into `received`, whose buffers are reused from call to call (halo refreshes).
+  void exchangeKnown(const std::vector<std::vector<char>>& toRank, const std::vector<std::size_t>& expected,
+                     std::vector<std::vector<char>>& received) const;
   /// Rank `root`'s `text` on every rank.
   std::string broadcast(const std::string& text, int root = 0) const;
   void barrier() const;

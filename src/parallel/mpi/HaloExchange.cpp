@@ -103,12 +103,13 @@ void HaloExchange::restore(ParticleSystem& particles, const Communicator& comm) 
   refresh(particles, {}, comm);
 }
 
-std::vector<std::vector<char>> HaloExchange::pack(const ParticleSystem& particles,
-                                                  const std::vector<std::string>& names, bool withCounts) const {
+void HaloExchange::pack(const ParticleSystem& particles, const std::vector<std::string>& names, bool withCounts,
+                        std::vector<std::vector<char>>& messages) const {
   const std::size_t ranks = lent_.empty() ? 0 : lent_.front().size();
   // Pack and unpack name the same fields on every rank: fieldsOf() depends on the set's registry only.
-  std::vector<std::vector<char>> messages(ranks);
+  messages.resize(ranks);
   for (std::size_t q = 0; q < ranks; ++q) {
+    messages[q].clear();
     bool any = false;
     for (std::size_t s = 0; s < particles.size(); ++s) any = any || !lent_[s][q].empty();
     if (!any) continue; // no message: the receiver reads an empty one as no ghosts from here
@@ -121,7 +122,6 @@ std::vector<std::vector<char>> HaloExchange::pack(const ParticleSystem& particle
       particles[s].pack(lent_[s][q], fields, messages[q]);
     }
   }
-  return messages;
 }
 
 void HaloExchange::build(ParticleSystem& particles, double reach, const Communicator& comm, const RestHalo& rest) {
@@ -151,7 +151,9 @@ void HaloExchange::build(ParticleSystem& particles, double reach, const Communic
     }
   }
 
-  const std::vector<std::vector<char>> received = comm.exchange(pack(particles, {}, true));
+  std::vector<std::vector<char>> messages;
+  pack(particles, {}, true, messages);
+  const std::vector<std::vector<char>> received = comm.exchange(messages);
   received_.assign(particles.size(), std::vector<std::size_t>(ranks, 0));
   std::vector<std::size_t> read(ranks, 0);
   for (std::size_t q = 0; q < ranks; ++q)
@@ -169,15 +171,21 @@ void HaloExchange::build(ParticleSystem& particles, double reach, const Communic
 
 void HaloExchange::refresh(ParticleSystem& particles, const std::vector<std::string>& names,
                            const Communicator& comm) const {
-  const std::vector<std::vector<char>> received = comm.exchange(pack(particles, names, false));
   std::vector<std::vector<std::string>> fields(particles.size());
-  for (std::size_t s = 0; s < particles.size(); ++s) fields[s] = fieldsOf(particles[s], names);
-  std::vector<std::size_t> at(received.size(), 0); // where the next set's data starts in each rank's message
+  std::vector<std::size_t> expected(received_.empty() ? 0 : received_.front().size(), 0);
+  for (std::size_t s = 0; s < particles.size(); ++s) {
+    fields[s] = fieldsOf(particles[s], names);
+    const std::size_t bytes = bytesPerParticle(particles[s], fields[s]);
+    for (std::size_t q = 0; q < expected.size(); ++q) expected[q] += received_[s][q] * bytes;
+  }
+  pack(particles, names, false, sendBuffers_);
+  comm.exchangeKnown(sendBuffers_, expected, receiveBuffers_);
+  std::vector<std::size_t> at(expected.size(), 0); // where the next set's data starts in each rank's message
   for (std::size_t s = 0; s < particles.size(); ++s) {
     std::size_t first = owned_[s];
-    for (std::size_t q = 0; q < received.size(); ++q) {
+    for (std::size_t q = 0; q < expected.size(); ++q) {
       const std::size_t count = received_[s][q];
-      if (count > 0) at[q] += particles[s].unpack(received[q].data() + at[q], count, first, fields[s]);
+      if (count > 0) at[q] += particles[s].unpack(receiveBuffers_[q].data() + at[q], count, first, fields[s]);
       first += count;
     }
   }

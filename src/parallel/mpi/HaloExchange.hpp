@@ -46,14 +46,16 @@ public:
   std::size_t lent(std::size_t set) const;
 
 private:
-  /// One message per rank with, per set, the particles lent to it (fields `names`); `withCounts` puts the particle
-  /// count and bytes per particle ahead of each set's data.
-  std::vector<std::vector<char>> pack(const ParticleSystem& particles, const std::vector<std::string>& names,
-                                      bool withCounts) const;
+  /// Into `messages`, one per rank: per set, the particles lent to that rank (fields `names`); `withCounts` puts the
+  /// particle count and bytes per particle ahead of each set's data. The buffers keep their memory.
+  void pack(const ParticleSystem& particles, const std::vector<std::string>& names, bool withCounts,
+            std::vector<std::vector<char>>& messages) const;
   std::vector<std::size_t> owned_;                    ///< per set
   std::vector<std::vector<std::vector<Index>>> lent_; ///< [set][rank]: slots lent to that rank
   std::vector<std::vector<std::size_t>> received_;    ///< [set][rank]: ghosts from that rank
   bool holdsGhosts_ = false;                          ///< the sets hold this build's ghosts
+  /// A refresh's messages, kept from one to the next (a step refreshes a dozen times or more).
+  mutable std::vector<std::vector<char>> sendBuffers_, receiveBuffers_;
 };
 
 } // namespace poro
