@@ -34,7 +34,7 @@ SolverPerformanceLog::SolverPerformanceLog(const fs::path& caseDir, const std::s
   out_ << "step,time_s,deltaT_s,maxSpeed_m_per_s,maxFluidDensity_rho0,pressureIterations,pressureConverged,"
           "densityErrorMean_pct,densityErrorMax_pct,cgIterations,cgConverged,cgResidual";
   for (const auto& phase : phaseColumns()) out_ << ',' << phase << "_s";
-  if (ranks_) out_ << ",particles,ghosts,imbalance,haloExchange_s";
+  if (ranks_) out_ << ",particles,ghosts,imbalance,haloExchange_s,migration_s";
   out_ << '\n';
 }
 
@@ -62,8 +62,9 @@ void SolverPerformanceLog::record(const Solver& solver) {
   if (ranks_) {
     const GhostExchange::Load load = ranks_->load();
     out_ << ',' << load.particles << ',' << load.ghosts << ',' << load.imbalance << ','
-         << load.seconds - previousExchange_;
+         << load.seconds - previousExchange_ << ',' << load.migrationSeconds - previousMigration_;
     previousExchange_ = load.seconds;
+    previousMigration_ = load.migrationSeconds;
   }
   out_ << '\n';
   out_.flush(); // a killed run keeps its rows

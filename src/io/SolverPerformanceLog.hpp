@@ -3,7 +3,7 @@
 /// pressure and CG convergence and the wall time of each phase, so that convergence and cost can be plotted
 /// (OpenFOAM keeps function-object output under postProcessing/<name>/<startTime>/ the same way). Each rank of a
 /// parallel run writes its own, in its processor directory, with its load: own particles, ghosts, the run's
-/// imbalance and the wall time of its halo exchanges and reductions in the step.
+/// imbalance, the wall time of its halo exchanges and reductions in the step, and the part of it spent migrating.
 
 #include "physics/Solver.hpp"
 
@@ -38,7 +38,7 @@ private:
   std::ofstream out_;
   const GhostExchange* ranks_ = nullptr;
   std::vector<double> previous_; ///< accumulated phase seconds at the previous row, by column
-  double previousExchange_ = 0.0;
+  double previousExchange_ = 0.0, previousMigration_ = 0.0;
   bool failed_ = false;
 };
 

@@ -38,7 +38,8 @@ public:
     std::size_t particles = 0;     ///< own, every set
     std::size_t ghosts = 0;        ///< every set
     double imbalance = 0.0;        ///< the heaviest rank's weight over the mean, minus 1
-    double seconds = 0.0;          ///< wall time in update, refresh and the reductions since the start [s]
+    double seconds = 0.0;          ///< wall time in update, reattach, refresh and the reductions since the start [s]
+    double migrationSeconds = 0.0; ///< the part of it in update: migration, new cuts and new halos [s]
     double meanImbalance = 0.0;    ///< over every update (migration) so far
     double largestImbalance = 0.0; ///< over every update (migration) so far
     std::size_t repartitions = 0;  ///< new cuts so far

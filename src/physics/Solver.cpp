@@ -65,12 +65,14 @@ std::string rankSummary(const GhostExchange& ranks, double loopSeconds) {
     return out.str();
   };
   const double share = loopSeconds > 0.0 ? 100.0 * load.seconds / loopSeconds : 0.0;
+  const double migrating = loopSeconds > 0.0 ? 100.0 * load.migrationSeconds / loopSeconds : 0.0;
   std::ostringstream out;
   out << std::fixed << std::setprecision(1) << "Ranks: " << ranks.ranks() << "; particles per rank "
       << meanAndLargest(static_cast<double>(load.particles), 0, "") << "; ghosts per rank "
       << meanAndLargest(static_cast<double>(load.ghosts), 0, "")
       << "\n  halo exchanges and reductions: " << meanAndLargest(share, 1, " %")
-      << " of a rank's time loop\n  imbalance (heaviest rank's weight over the mean): " << 100.0 * load.meanImbalance
+      << " of a rank's time loop, of which migrations and new halos " << meanAndLargest(migrating, 1, " %")
+      << "\n  imbalance (heaviest rank's weight over the mean): " << 100.0 * load.meanImbalance
       << " % mean over the migrations, " << 100.0 * load.largestImbalance << " % largest; re-partitioned "
       << load.repartitions << " times\n";
   return out.str();

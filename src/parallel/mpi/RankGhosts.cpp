@@ -18,6 +18,7 @@ double RankGhosts::weightOf(const ParticleSystem& particles) const {
 
 void RankGhosts::update(ParticleSystem& particles) {
   const Stopwatch watch(seconds_);
+  const Stopwatch migrating(migrationSeconds_);
   halo_.dropGhosts(particles);
   migrate(particles, partition_, comm_);
   // The balance after the particles went where the cut sends them; a new cut is a function of the positions alone,
@@ -64,6 +65,7 @@ bool RankGhosts::reattach(ParticleSystem& particles) {
     halo_.restore(particles, comm_);
     return true;
   }
+  const Stopwatch building(migrationSeconds_);
   halo_.dropGhosts(particles);
   buildHalo(particles);
   return false;

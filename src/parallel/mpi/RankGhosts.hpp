@@ -44,7 +44,7 @@ public:
 
   Load load() const override {
     const double mean = updates_ ? imbalanceSum_ / static_cast<double>(updates_) : 0.0;
-    return {particles_, ghosts_, imbalance_, seconds_, mean, largestImbalance_, repartitions_};
+    return {particles_, ghosts_, imbalance_, seconds_, migrationSeconds_, mean, largestImbalance_, repartitions_};
   }
   const Partition& partition() const { return partition_; }
 
@@ -74,6 +74,7 @@ private:
   RestHalo rest_;
   HaloExchange halo_;
   mutable double seconds_ = 0.0;
+  double migrationSeconds_ = 0.0;
   std::size_t particles_ = 0, ghosts_ = 0, updates_ = 0, repartitions_ = 0;
   double imbalance_ = 0.0, imbalanceSum_ = 0.0, largestImbalance_ = 0.0;
 };
