@@ -106,10 +106,9 @@ SimulationCase readCase(const fs::path& caseDir, int threads, const fs::path& ti
       if (sameTime(t.time, control.startTime)) startName = t.name;
     throwIfIncomplete(timesDir, [&](double t) { return startName.empty() && sameTime(t, control.startTime); });
     if (startName.empty())
-      controlDictError("startTime",
-                       "no time directory " + timeName(control.startTime) +
-                           (times.empty() ? "; run sampleParticles first"
-                                          : "; the case has " + names + " (or use startFrom: latestTime)"));
+      controlDictError("startTime", "no time directory " + timeName(control.startTime) +
+                                        (times.empty() ? "; run sampleParticles first"
+                                                       : "; the case has " + names + " (or use startFrom: latestTime)"));
   }
   RunState start = readRunState(timesDir / startName);
   checkSampledRegions(caseDir, timesDir / startName); // before reading what may be gigabytes of particles
@@ -119,17 +118,8 @@ SimulationCase readCase(const fs::path& caseDir, int threads, const fs::path& ti
   ParticleSystem particles =
       endTimeReached ? ParticleSystem(radius)
                      : readParticles(timesDir, startName, radius, materials, timesDir != caseDir); // a rank's share
-  return SimulationCase{control,
-                        output,
-                        solver,
-                        fluid,
-                        std::move(materials),
-                        startName,
-                        start,
-                        std::move(particles),
-                        std::move(wallMotions),
-                        std::move(rigidBodies),
-                        endTimeReached};
+  return SimulationCase{control,   output, solver, fluid, std::move(materials), startName, start, std::move(particles),
+                        std::move(wallMotions), std::move(rigidBodies), endTimeReached};
 }
 
 } // namespace poro
