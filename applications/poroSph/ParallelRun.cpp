@@ -34,13 +34,6 @@ std::string readText(const fs::path& file) {
   return text.str();
 }
 
-/// What the parallel run does not do yet, refused by name rather than run wrong.
-void refuseUnsupported(const SimulationCase& simulation) {
-  if (!simulation.rigidBodies.empty())
-    throw InputError("poroSph -parallel: the case has rigid bodies; decomposed runs handle fluid, walls and porous "
-                     "bodies so far. Run it serially (reconstructPar, then poroSph without -parallel)");
-}
-
 /// Elastic sets lend by rest position too, two support radii deep: the rest neighbours of every own particle and
 /// theirs (RestHalo), so a rank never lacks one, however far a body has deformed or moved.
 RestHalo restHaloOf(const SimulationCase& simulation) {
@@ -81,7 +74,6 @@ int runRank(const Arguments& args, const Communicator& comm) {
               " has reached endTime: nothing to run.\nEnd");
     return 0;
   }
-  refuseUnsupported(simulation);
   const DecomposeSettings settings = readDecomposeSettings(caseDir);
   std::ostringstream banner;
   banner << "Case: " << caseDir.string() << " (parallel, " << comm.size() << " ranks)\nStarting from time "

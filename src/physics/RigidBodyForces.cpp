@@ -33,7 +33,7 @@ std::vector<Wrench> rigidBodyWrenches(const StepContext& ctx, const std::vector<
       const auto& object = wall.integer(field::objectId);
       const NeighbourList& list = ctx.search.list(a, k);
       const auto& factors = ctx.gradients.of(a, k);
-      for (std::size_t i = 0; i < set.size(); ++i) {
+      for (std::size_t i = 0; i < ctx.owned(a); ++i) {        // a parallel run's ghosts are their owners' to count
         const double push = pi[i] + (kappa ? kappa[i] : 0.0); // the wall terms of pi and of wall contact
         if ((fixed && fixed[i]) || push == 0.0) continue;
         std::size_t q = list.offset(i);

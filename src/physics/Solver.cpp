@@ -25,6 +25,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <numeric>
 #include <sstream>
 
 namespace poro {
@@ -279,13 +280,23 @@ void Solver::setUpRigidBodies(std::vector<RigidBody::Spec> specs) {
                      std::to_string(state_.rigidBodies.size()) + " bodies, system/particleDict has " +
                      std::to_string(specs.size()) + " rigid regions; run sampleParticles again and start from 0");
   for (std::size_t b = 0; b < specs.size(); ++b) {
-    std::vector<Vec3> rest;
+    // The body's particles (id, X), on every rank of a parallel run, in id order: its mass and inertia are then the
+    // same sums whichever rank holds which particle, so a restart on other owners continues bit for bit.
+    std::vector<double> flat;
     for (std::size_t k : boundarySets_) {
       const auto& object = particles_[k].integer(field::objectId);
+      const auto& id = particles_[k].integer(field::id);
       const auto& X = particles_[k].vec3(field::restPosition);
       for (std::size_t i = 0; i < object.size(); ++i)
-        if (object[i] == specs[b].objectId) rest.push_back(X[i]);
+        if (object[i] == specs[b].objectId)
+          flat.insert(flat.end(), {static_cast<double>(id[i]), X[i].x(), X[i].y(), X[i].z()});
     }
+    if (ghosts_) flat = ghosts_->gather(flat);
+    std::vector<std::size_t> order(flat.size() / 4);
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t p, std::size_t q) { return flat[4 * p] < flat[4 * q]; });
+    std::vector<Vec3> rest;
+    for (const std::size_t p : order) rest.emplace_back(flat[4 * p + 1], flat[4 * p + 2], flat[4 * p + 3]);
     if (rest.empty())
       throw InputError(specs[b].where + ": rigid region '" + specs[b].name + "' has no particle in the walls of the " +
                        "start time directory; run sampleParticles again (it rewrites 0/) and start from 0");
@@ -305,7 +316,13 @@ void Solver::moveRigidBodies(const StepContext& ctx, double deltaT) {
     objects.push_back(rigidBodies_[b].objectId());
     centres.push_back(state_.rigidBodies[b].centre);
   }
-  const std::vector<Wrench> wrenches = rigidBodyWrenches(ctx, objects, centres, implicit_.wallReactions());
+  std::vector<Wrench> wrenches = rigidBodyWrenches(ctx, objects, centres, implicit_.wallReactions());
+  if (ghosts_) // each rank summed the forces of its own particles
+    for (Wrench& w : wrenches)
+      for (int c = 0; c < 3; ++c) {
+        w.force[c] = ghosts_->sum(w.force[c]);
+        w.torque[c] = ghosts_->sum(w.torque[c]);
+      }
   for (std::size_t b = 0; b < rigidBodies_.size(); ++b)
     if (!rigidBodies_[b].heldAt(state_.time))
       rigidBodies_[b].integrate(state_.rigidBodies[b], wrenches[b].force + rigidBodies_[b].mass() * fluid_.gravity,

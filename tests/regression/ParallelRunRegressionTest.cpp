@@ -1,6 +1,6 @@
-// poroSph -parallel on MPI ranks (ARCHITECTURE.md "Decomposed runs"): a decomposed dam break, a porous wall and an
-// elastic sponge equal the serial run to round-off on 2 and 3 ranks, a run continues bit for bit from a time it
-// wrote, and cases it cannot run yet are refused by name.
+// poroSph -parallel on MPI ranks (ARCHITECTURE.md "Decomposed runs"): a decomposed dam break, a porous wall, an
+// elastic sponge and a floating rigid box equal the serial run to round-off on 2 and 3 ranks, a run continues bit for
+// bit from a time it wrote, and a wrong number of ranks is refused by name.
 
 #include "CaseRunner.hpp"
 
@@ -171,7 +171,7 @@ TEST(ParallelRun, ControlDictEditsTakeEffectOnEveryRankAfterTheSameStep) {
   EXPECT_LT(std::stod(last("processor0")), 5.0);
 }
 
-TEST(ParallelRun, RefusesWhatItCannotRunByName) {
+TEST(ParallelRun, RefusesTheWrongNumberOfRanksByName) {
   CaseRunner wrongRanks("fluid/damBreak");
   makeSmallViscousDamBreak(wrongRanks, "0.01");
   wrongRanks.write("system/decomposeParDict", "numberOfSubdomains: 3\n");
@@ -180,15 +180,18 @@ TEST(ParallelRun, RefusesWhatItCannotRunByName) {
   EXPECT_NE(runOnRanks(wrongRanks, 2), 0);
   EXPECT_NE(wrongRanks.read("log.poroSph").find("3 processor directories for 2 ranks"), std::string::npos)
       << wrongRanks.read("log.poroSph");
+}
 
-  CaseRunner rigid("rigid/floatingBox");
-  rigid.setKey("system/controlDict", "endTime", "0.01");
-  rigid.write("system/decomposeParDict", "numberOfSubdomains: 2\n");
-  ASSERT_EQ(rigid.sample(), 0);
-  ASSERT_EQ(rigid.run(POROSPH_DECOMPOSE), 0);
-  EXPECT_NE(runOnRanks(rigid, 2), 0);
-  EXPECT_NE(rigid.read("log.poroSph").find("the case has rigid bodies"), std::string::npos)
-      << rigid.read("log.poroSph");
+// The floating box of rigid/floatingBox (2,400 water and 144 box particles at r = 1 cm) drops the millimetre onto the
+// water and bobs: its wrench is summed over the ranks, its mass and inertia over all of its particles.
+TEST(ParallelRun, ARigidBodyOnTwoAndThreeRanksEqualsTheSerialRun) {
+  const auto short100 = [](CaseRunner& runner) {
+    runner.setKey("system/controlDict", "endTime", "0.1");
+    runner.setKey("system/controlDict", "writeInterval", "0.05");
+  };
+  // Round-off grown over 100 steps, as for the sponge.
+  for (const double shift : shiftsAgainstSerial(short100, "rigid/floatingBox", "0.1", {"fluid", "rigid"}))
+    EXPECT_LT(shift, 1e-9);
 }
 
 /// The elastic sponge of porous/sponge at r = 2 cm (1,512 water and 162 sponge particles) to `endTime`: it falls 4 cm
@@ -212,14 +215,17 @@ TEST(ParallelRun, AnElasticSpongeOnTwoAndThreeRanksEqualsTheSerialRun) {
     EXPECT_LT(shift, 1e-9);
 }
 
-// A sponge run stopped at 0.05 s continues on its ranks bit for bit, and serially after reconstructPar to round-off.
-TEST(ParallelRun, AnElasticSpongeRestartsOnItsRanksBitForBitAndSeriallyAfterReconstructPar) {
-  CaseRunner straight("porous/sponge");
-  CaseRunner split("porous/sponge");
-  makeCoarseSponge(straight, "0.1");
-  makeCoarseSponge(split, "0.05");
+/// `tutorial` made by `makeCase(runner, endTime)` on 2 ranks (decomposeParDict `decompose`), once to 0.1 s and once to
+/// 0.05 s and continued to 0.1 s: the pieces of 0.1 s, compared byte for byte. Returns the uninterrupted run's case.
+void expectRestartBitForBit(const std::string& tutorial,
+                            const std::function<void(CaseRunner&, const std::string&)>& makeCase,
+                            const std::string& decompose, const std::vector<std::string>& pieces,
+                            CaseRunner& straight) {
+  CaseRunner split(tutorial);
+  makeCase(straight, "0.1");
+  makeCase(split, "0.05");
   for (CaseRunner* runner : {&straight, &split}) {
-    runner->write("system/decomposeParDict", "numberOfSubdomains: 2\nmethod: hilbertCurve\n"); // cuts the sponge
+    runner->write("system/decomposeParDict", decompose);
     ASSERT_EQ(runner->sample(), 0);
     ASSERT_EQ(runner->run(POROSPH_DECOMPOSE), 0) << runner->read("log.decomposePar");
     ASSERT_EQ(runOnRanks(*runner, 2), 0) << runner->read("log.poroSph");
@@ -228,18 +234,39 @@ TEST(ParallelRun, AnElasticSpongeRestartsOnItsRanksBitForBitAndSeriallyAfterReco
   split.setKey("system/controlDict", "startFrom", "latestTime");
   ASSERT_EQ(runOnRanks(split, 2), 0) << split.read("log.poroSph");
   EXPECT_NE(split.read("log.poroSph").find("Starting from time 0.05"), std::string::npos);
-  for (const char* piece : {"processor0/0.1/fluid.vtp", "processor1/0.1/fluid.vtp", "processor0/0.1/porous.vtp",
-                            "processor1/0.1/porous.vtp"})
-    EXPECT_TRUE(straight.read(piece) == split.read(piece)) << piece << " differs";
+  for (const std::string& piece : pieces)
+    for (const char* processor : {"processor0/0.1/", "processor1/0.1/"})
+      EXPECT_TRUE(straight.read(processor + piece) == split.read(processor + piece))
+          << processor << piece << " differs";
+}
 
-  // decomposePar -> parallel run -> reconstructPar -> serial run: the serial continuation of 0.05 s.
+// A sponge run stopped at 0.05 s continues on its ranks bit for bit, and serially after reconstructPar to round-off.
+TEST(ParallelRun, AnElasticSpongeRestartsOnItsRanksBitForBitAndSeriallyAfterReconstructPar) {
+  CaseRunner straight("porous/sponge");
+  expectRestartBitForBit("porous/sponge", makeCoarseSponge, "numberOfSubdomains: 2\nmethod: hilbertCurve\n",
+                         {"fluid.vtp", "porous.vtp"}, straight); // a Hilbert curve cuts the sponge
+  // decomposePar -> parallel run -> reconstructPar -> serial run: the serial continuation of 0.05 s against the
+  // parallel run's 0.1 s.
+  ASSERT_EQ(straight.run(POROSPH_RECONSTRUCT, "-time 0.1"), 0) << straight.read("log.reconstructPar");
+  const double radius = readParticleRadius(straight.dir());
+  const ParticleSystem parallel = straight.particles("0.1", radius);
+  fs::remove_all(straight.dir() / "0.1");
   ASSERT_EQ(straight.run(POROSPH_RECONSTRUCT, "-time 0.05"), 0) << straight.read("log.reconstructPar");
   ASSERT_EQ(straight.solve("-threads 1"), 0) << straight.read("log.poroSph");
   EXPECT_NE(straight.read("log.poroSph").find("Starting from time 0.05"), std::string::npos);
-  ASSERT_EQ(split.run(POROSPH_RECONSTRUCT, "-time 0.1"), 0) << split.read("log.reconstructPar");
-  const double radius = readParticleRadius(straight.dir());
   for (const char* set : {"fluid", "sponge"}) // 50 steps: round-off, as above
-    EXPECT_LT(largestShift(straight.particles("0.1", radius), split.particles("0.1", radius), set, radius), 1e-9);
+    EXPECT_LT(largestShift(straight.particles("0.1", radius), parallel, set, radius), 1e-9);
+}
+
+// The floating box stopped at 0.05 s continues on its ranks bit for bit: its body state and the particles.
+TEST(ParallelRun, ARigidBodyRestartsOnItsRanksBitForBit) {
+  CaseRunner straight("rigid/floatingBox");
+  const auto makeCase = [](CaseRunner& runner, const std::string& endTime) {
+    runner.setKey("system/controlDict", "endTime", endTime);
+    runner.setKey("system/controlDict", "writeInterval", "0.05");
+  };
+  expectRestartBitForBit("rigid/floatingBox", makeCase, "numberOfSubdomains: 2\n",
+                         {"fluid.vtp", "rigid.vtp", "uniform/rigidBodies"}, straight);
 }
 
 // The fixed porous wall of porous/porousWall at r = 2 cm, the water column moved against it so that it seeps in from

@@ -57,6 +57,21 @@ std::vector<double> Communicator::allGather(const std::vector<double>& values) c
   return all;
 }
 
+std::vector<double> Communicator::allGatherVaried(const std::vector<double>& values) const {
+  if (values.size() > INT_MAX) throw std::runtime_error("a gather above 2^31 values");
+  const std::vector<double> counts = allGather({static_cast<double>(values.size())});
+  std::vector<int> sizes(counts.size()), offsets(counts.size(), 0);
+  for (std::size_t q = 0; q < counts.size(); ++q) {
+    sizes[q] = static_cast<int>(counts[q]);
+    if (q > 0) offsets[q] = offsets[q - 1] + sizes[q - 1];
+  }
+  std::vector<double> all(static_cast<std::size_t>(offsets.back() + sizes.back()));
+  check(MPI_Allgatherv(values.data(), static_cast<int>(values.size()), MPI_DOUBLE, all.data(), sizes.data(),
+                       offsets.data(), MPI_DOUBLE, MPI_COMM_WORLD),
+        "MPI_Allgatherv");
+  return all;
+}
+
 std::string Communicator::broadcast(const std::string& text, int root) const {
   long long size = rank_ == root ? static_cast<long long>(text.size()) : 0;
   check(MPI_Bcast(&size, 1, MPI_LONG_LONG, root, MPI_COMM_WORLD), "MPI_Bcast");

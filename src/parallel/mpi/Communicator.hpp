@@ -31,6 +31,8 @@ public:
   void max(std::vector<double>& values) const;
   /// Every rank's `values` (the same length on every rank), concatenated in rank order.
   std::vector<double> allGather(const std::vector<double>& values) const;
+  /// Every rank's `values` (any length), concatenated in rank order.
+  std::vector<double> allGatherVaried(const std::vector<double>& values) const;
   /// Sends toRank[q] to rank q (toRank has size() entries, its own ignored) and returns, per rank, what that rank sent
   /// here. Empty messages cost no message.
   std::vector<std::vector<char>> exchange(const std::vector<std::vector<char>>& toRank) const;

@@ -35,6 +35,10 @@ public:
     const Stopwatch watch(seconds_);
     return comm_.sum(value);
   }
+  std::vector<double> gather(const std::vector<double>& values) const override {
+    const Stopwatch watch(seconds_);
+    return comm_.allGatherVaried(values);
+  }
   double max(double value) const override {
     const Stopwatch watch(seconds_);
     return comm_.max(value);
