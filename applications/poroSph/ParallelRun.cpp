@@ -108,7 +108,10 @@ int runRank(const Arguments& args, const Communicator& comm) {
     writer.setUniformFile("partition", ghosts.partition().text()); // the cut of this time (it may have changed)
     writer.write(s.particles(), s.state());
     comm.barrier(); // every piece of this time is on disk: rank 0 lists them all for ParaView
-    if (comm.rank() == 0) seriesOfSubdomains(processors).write(caseDir / "case.pvd");
+    if (comm.rank() == 0) {
+      seriesOfSubdomains(processors).write(caseDir / "case.pvd");
+      appendRigidBodyRows(caseDir, s.state()); // the bodies are every rank's: the case's trajectory, as a serial run's
+    }
   };
   // runTimeModifiable: rank 0 looks at system/controlDict after every step and, when it changed, every rank applies
   // the text rank 0 read, so all of them change their settings after the same step.

@@ -125,35 +125,6 @@ void writeRunState(const fs::path& dir, const RunState& state, double particleRa
   writeFileAtomically(dir / "uniform" / "rigidBodies", bodies.str());
 }
 
-/// postProcessing/rigidBodies/<name>.csv: one row per write; a row of a time at or after `time` (a run again from
-/// an earlier time) is dropped first, so the file holds one trajectory.
-void appendRigidBodyRows(const fs::path& caseDir, const RunState& state) {
-  if (state.rigidBodies.empty()) return;
-  const fs::path dir = caseDir / "postProcessing" / "rigidBodies";
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw OutputError(dir.string() + ": cannot create directory: " + ec.message());
-  const char* header = "time,cx,cy,cz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz";
-  for (const RigidBodyState& b : state.rigidBodies) {
-    const fs::path file = dir / (b.name + ".csv");
-    std::string kept = std::string(header) + "\n";
-    if (std::ifstream in{file}) {
-      std::string line;
-      std::getline(in, line);
-      while (std::getline(in, line))
-        if (!line.empty() && std::strtod(line.c_str(), nullptr) < state.time - 1e-12) kept += line + "\n";
-    }
-    const Eigen::Quaterniond q{Eigen::Matrix3d(b.rotation)};
-    std::ostringstream row;
-    row << std::setprecision(10) << state.time;
-    for (double value :
-         {b.centre.x(), b.centre.y(), b.centre.z(), q.w(), q.x(), q.y(), q.z(), b.velocity.x(), b.velocity.y(),
-          b.velocity.z(), b.angularVelocity.x(), b.angularVelocity.y(), b.angularVelocity.z()})
-      row << ',' << value;
-    writeFileAtomically(file, kept + row.str() + "\n");
-  }
-}
-
 RigidBodyState readRigidBody(const Dictionary& d) {
   RigidBodyState b;
   b.name = d.getString("name");
@@ -305,6 +276,33 @@ bool isStalePvdTemporary(const std::string& entry) {
 }
 
 } // namespace
+
+void appendRigidBodyRows(const fs::path& caseDir, const RunState& state) {
+  if (state.rigidBodies.empty()) return;
+  const fs::path dir = caseDir / "postProcessing" / "rigidBodies";
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw OutputError(dir.string() + ": cannot create directory: " + ec.message());
+  const char* header = "time,cx,cy,cz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz";
+  for (const RigidBodyState& b : state.rigidBodies) {
+    const fs::path file = dir / (b.name + ".csv");
+    std::string kept = std::string(header) + "\n";
+    if (std::ifstream in{file}) {
+      std::string line;
+      std::getline(in, line);
+      while (std::getline(in, line))
+        if (!line.empty() && std::strtod(line.c_str(), nullptr) < state.time - 1e-12) kept += line + "\n";
+    }
+    const Eigen::Quaterniond q{Eigen::Matrix3d(b.rotation)};
+    std::ostringstream row;
+    row << std::setprecision(10) << state.time;
+    for (double value :
+         {b.centre.x(), b.centre.y(), b.centre.z(), q.w(), q.x(), q.y(), q.z(), b.velocity.x(), b.velocity.y(),
+          b.velocity.z(), b.angularVelocity.x(), b.angularVelocity.y(), b.angularVelocity.z()})
+      row << ',' << value;
+    writeFileAtomically(file, kept + row.str() + "\n");
+  }
+}
 
 std::vector<std::string> particleSetOrder(const std::vector<PorousMaterial>& materials) {
   std::vector<std::string> names{"fluid"};

@@ -54,6 +54,11 @@ RunState readRunState(const std::filesystem::path& timeDir);
 /// missing file of a phase its regions sample (a deleted boundary.vtp or porous.vtp), and a materialId that names
 /// another material than the one uniform/sampling records it was sampled as (checkSampledMaterials).
 /// `everyMaterial`: a set for every material, empty where porous.vtp has none of it (a rank of a decomposed case).
+/// postProcessing/rigidBodies/<name>.csv of `caseDir`: one row per write of each body of `state`; rows at or after
+/// its time (a run again from an earlier time) are dropped first, so the file holds one trajectory. TimeWriter calls
+/// it; rank 0 of a parallel run also does for the case itself.
+void appendRigidBodyRows(const std::filesystem::path& caseDir, const RunState& state);
+
 ParticleSystem readParticles(const std::filesystem::path& caseDir, const std::string& timeName, double particleRadius,
                              const std::vector<PorousMaterial>& materials, bool everyMaterial = false);
 

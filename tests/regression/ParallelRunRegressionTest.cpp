@@ -267,6 +267,9 @@ TEST(ParallelRun, ARigidBodyRestartsOnItsRanksBitForBit) {
   };
   expectRestartBitForBit("rigid/floatingBox", makeCase, "numberOfSubdomains: 2\n",
                          {"fluid.vtp", "rigid.vtp", "uniform/rigidBodies"}, straight);
+  // The case's own trajectory, as a serial run writes it: 0, 0.05 and 0.1 s.
+  const std::string trajectory = straight.read("postProcessing/rigidBodies/box.csv");
+  EXPECT_EQ(std::count(trajectory.begin(), trajectory.end(), '\n'), 4) << trajectory;
 }
 
 // The fixed porous wall of porous/porousWall at r = 2 cm, the water column moved against it so that it seeps in from
