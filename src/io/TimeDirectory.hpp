@@ -44,6 +44,11 @@ std::vector<TimeDirectoryEntry> listTimeDirectories(const std::filesystem::path&
 /// from the directory's name is an InputError.
 RunState readRunState(const std::filesystem::path& timeDir);
 
+/// postProcessing/rigidBodies/<name>.csv of `caseDir`: one row per write of each body of `state`; rows at or after
+/// its time (a run again from an earlier time) are dropped first, so the file holds one trajectory. TimeWriter calls
+/// it; rank 0 of a parallel run also does for the case itself.
+void appendRigidBodyRows(const std::filesystem::path& caseDir, const RunState& state);
+
 /// Loads every particle set of a time directory: `fluid.vtp`, `porous.vtp` and `boundary.vtp` (or
 /// `0/boundary.vtp` when the directory has no boundary of its own), in ParticleSystem order. `fluid` and
 /// `boundary` name the fluid and wall sets; porous.vtp is split by its materialId into one set per material
@@ -54,11 +59,6 @@ RunState readRunState(const std::filesystem::path& timeDir);
 /// missing file of a phase its regions sample (a deleted boundary.vtp or porous.vtp), and a materialId that names
 /// another material than the one uniform/sampling records it was sampled as (checkSampledMaterials).
 /// `everyMaterial`: a set for every material, empty where porous.vtp has none of it (a rank of a decomposed case).
-/// postProcessing/rigidBodies/<name>.csv of `caseDir`: one row per write of each body of `state`; rows at or after
-/// its time (a run again from an earlier time) are dropped first, so the file holds one trajectory. TimeWriter calls
-/// it; rank 0 of a parallel run also does for the case itself.
-void appendRigidBodyRows(const std::filesystem::path& caseDir, const RunState& state);
-
 ParticleSystem readParticles(const std::filesystem::path& caseDir, const std::string& timeName, double particleRadius,
                              const std::vector<PorousMaterial>& materials, bool everyMaterial = false);
 
