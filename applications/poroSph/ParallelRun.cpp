@@ -1,5 +1,6 @@
 #include "ParallelRun.hpp"
 
+#include "ControlDictChange.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "core/Parallel.hpp"
@@ -122,12 +123,7 @@ int runRank(const Arguments& args, const Communicator& comm) {
     const std::optional<std::string> text = comm.rank() == 0 ? watcher.changedText() : std::nullopt;
     if (comm.max(text ? 1.0 : 0.0) == 0.0) return;
     const std::optional<ControlSettings> changed = watcher.settingsOf(comm.broadcast(text.value_or("")));
-    if (!changed) return;
-    const std::string changes = describeChanges(current, *changed);
-    if (!changes.empty()) log::info("system/controlDict changed (runTimeModifiable):\n" + changes);
-    current = *changed;
-    s.setTimeControl(current.control);
-    writer.setSettings(current.output);
+    if (changed) applyControlDictChange(current, *changed, s, writer);
   };
   const RunOutcome outcome = solver.run(write, rereadControlDict, [&](const Solver& s) { performance.record(s); });
   return outcome.end == RunOutcome::End::Signal ? 1 : 0;

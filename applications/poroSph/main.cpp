@@ -1,5 +1,6 @@
 /// poroSph: the porous-flow SPH solver. Reads a case, runs it to endTime, writes time directories.
 
+#include "ControlDictChange.hpp"
 #include "ParallelRun.hpp"
 #include "core/Arguments.hpp"
 #include "core/Error.hpp"
@@ -60,13 +61,7 @@ int main(int argc, char* argv[]) try {
   ControlSettings current{simulation.control, simulation.output};
   const auto rereadControlDict = [&](Solver& s) {
     if (!current.control.runTimeModifiable) return;
-    auto changed = watcher.poll();
-    if (!changed) return;
-    const std::string changes = describeChanges(current, *changed);
-    if (!changes.empty()) log::info("system/controlDict changed (runTimeModifiable):\n" + changes);
-    current = *changed;
-    s.setTimeControl(current.control);
-    writer.setSettings(current.output);
+    if (const auto changed = watcher.poll()) applyControlDictChange(current, *changed, s, writer);
   };
   signals::installStopHandlers();
   SolverPerformanceLog performance(args.caseDir(), simulation.startName);
