@@ -21,14 +21,10 @@ fs::file_time_type modificationTime(const fs::path& file) {
 
 const char* toString(TimeControl::StopAt s) {
   switch (s) {
-  case TimeControl::StopAt::EndTime:
-    return "endTime";
-  case TimeControl::StopAt::WriteNow:
-    return "writeNow";
-  case TimeControl::StopAt::NoWriteNow:
-    return "noWriteNow";
-  case TimeControl::StopAt::NextWrite:
-    return "nextWrite";
+  case TimeControl::StopAt::EndTime: return "endTime";
+  case TimeControl::StopAt::WriteNow: return "writeNow";
+  case TimeControl::StopAt::NoWriteNow: return "noWriteNow";
+  case TimeControl::StopAt::NextWrite: return "nextWrite";
   }
   return "?";
 }

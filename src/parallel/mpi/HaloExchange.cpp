@@ -103,10 +103,9 @@ void HaloExchange::restore(ParticleSystem& particles, const Communicator& comm) 
   refresh(particles, {}, comm);
 }
 
-void HaloExchange::pack(const ParticleSystem& particles, const std::vector<std::string>& names, bool withCounts,
-                        std::vector<std::vector<char>>& messages) const {
+void HaloExchange::pack(const ParticleSystem& particles, const std::vector<std::vector<std::string>>& fields,
+                        bool withCounts, std::vector<std::vector<char>>& messages) const {
   const std::size_t ranks = lent_.empty() ? 0 : lent_.front().size();
-  // Pack and unpack name the same fields on every rank: fieldsOf() depends on the set's registry only.
   messages.resize(ranks);
   for (std::size_t q = 0; q < ranks; ++q) {
     messages[q].clear();
@@ -114,12 +113,11 @@ void HaloExchange::pack(const ParticleSystem& particles, const std::vector<std::
     for (std::size_t s = 0; s < particles.size(); ++s) any = any || !lent_[s][q].empty();
     if (!any) continue; // no message: the receiver reads an empty one as no ghosts from here
     for (std::size_t s = 0; s < particles.size(); ++s) {
-      const std::vector<std::string> fields = fieldsOf(particles[s], names);
       if (withCounts) {
         putCount(messages[q], lent_[s][q].size());
-        putCount(messages[q], bytesPerParticle(particles[s], fields));
+        putCount(messages[q], bytesPerParticle(particles[s], fields[s]));
       }
-      particles[s].pack(lent_[s][q], fields, messages[q]);
+      particles[s].pack(lent_[s][q], fields[s], messages[q]);
     }
   }
 }
@@ -151,8 +149,10 @@ void HaloExchange::build(ParticleSystem& particles, double reach, const Communic
     }
   }
 
+  std::vector<std::vector<std::string>> fields(particles.size());
+  for (std::size_t s = 0; s < particles.size(); ++s) fields[s] = particles[s].fieldNames();
   std::vector<std::vector<char>> messages;
-  pack(particles, {}, true, messages);
+  pack(particles, fields, true, messages);
   const std::vector<std::vector<char>> received = comm.exchange(messages);
   received_.assign(particles.size(), std::vector<std::size_t>(ranks, 0));
   std::vector<std::size_t> read(ranks, 0);
@@ -171,6 +171,7 @@ void HaloExchange::build(ParticleSystem& particles, double reach, const Communic
 
 void HaloExchange::refresh(ParticleSystem& particles, const std::vector<std::string>& names,
                            const Communicator& comm) const {
+  // Pack and unpack name the same fields on every rank: fieldsOf() depends on the set's registry only.
   std::vector<std::vector<std::string>> fields(particles.size());
   std::vector<std::size_t> expected(received_.empty() ? 0 : received_.front().size(), 0);
   for (std::size_t s = 0; s < particles.size(); ++s) {
@@ -178,7 +179,7 @@ void HaloExchange::refresh(ParticleSystem& particles, const std::vector<std::str
     const std::size_t bytes = bytesPerParticle(particles[s], fields[s]);
     for (std::size_t q = 0; q < expected.size(); ++q) expected[q] += received_[s][q] * bytes;
   }
-  pack(particles, names, false, sendBuffers_);
+  pack(particles, fields, false, sendBuffers_);
   comm.exchangeKnown(sendBuffers_, expected, receiveBuffers_);
   std::vector<std::size_t> at(expected.size(), 0); // where the next set's data starts in each rank's message
   for (std::size_t s = 0; s < particles.size(); ++s) {

@@ -46,9 +46,9 @@ public:
   std::size_t lent(std::size_t set) const;
 
 private:
-  /// Into `messages`, one per rank: per set, the particles lent to that rank (fields `names`); `withCounts` puts the
+  /// Into `messages`, one per rank: per set s, the particles lent to that rank (fields[s]); `withCounts` puts the
   /// particle count and bytes per particle ahead of each set's data. The buffers keep their memory.
-  void pack(const ParticleSystem& particles, const std::vector<std::string>& names, bool withCounts,
+  void pack(const ParticleSystem& particles, const std::vector<std::vector<std::string>>& fields, bool withCounts,
             std::vector<std::vector<char>>& messages) const;
   std::vector<std::size_t> owned_;                    ///< per set
   std::vector<std::vector<std::vector<Index>>> lent_; ///< [set][rank]: slots lent to that rank
