@@ -51,13 +51,7 @@ RestHalo restHaloOf(const SimulationCase& simulation) {
 /// The partition of the particles of every rank, by decomposeParDict's method and weights: decomposePar's cut of the
 /// same particles, so nothing moves at the start.
 Partition partitionOf(const ParticleSystem& particles, const DecomposeSettings& settings, const Communicator& comm) {
-  std::vector<Vec3> points;
-  std::vector<double> weights;
-  for (std::size_t s = 0; s < particles.size(); ++s) {
-    points.insert(points.end(), particles[s].x().begin(), particles[s].x().end());
-    weights.insert(weights.end(), particles[s].size(), settings.weightOf(particles[s].kind()));
-  }
-  return Partition::build(points, weights, comm.size(), settings.method, reductionsOver(comm));
+  return WeightedParticles(particles, settings).cut(comm.size(), settings.method, reductionsOver(comm));
 }
 
 int runRank(const Arguments& args, const Communicator& comm) {

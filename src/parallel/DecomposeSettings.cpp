@@ -4,6 +4,18 @@
 
 namespace poro {
 
+WeightedParticles::WeightedParticles(const ParticleSystem& particles, const DecomposeSettings& settings) {
+  points.reserve(particles.particleCount());
+  weights.reserve(particles.particleCount());
+  classes.reserve(particles.particleCount());
+  for (std::size_t s = 0; s < particles.size(); ++s) {
+    const ParticleSet& set = particles[s];
+    points.insert(points.end(), set.x().begin(), set.x().end());
+    weights.insert(weights.end(), set.size(), settings.weightOf(set.kind()));
+    classes.insert(classes.end(), set.size(), set.kind() == SetKind::Boundary ? -1 : static_cast<int>(set.kind()));
+  }
+}
+
 DecomposeSettings readDecomposeSettings(const std::filesystem::path& caseDir) {
   const Dictionary dict = Dictionary::read((caseDir / "system" / "decomposeParDict").string());
   DecomposeSettings s;

@@ -4,8 +4,10 @@
 
 #include "parallel/Partition.hpp"
 #include "sph/ParticleSet.hpp"
+#include "sph/ParticleSystem.hpp"
 
 #include <filesystem>
+#include <vector>
 
 namespace poro {
 
@@ -24,6 +26,21 @@ struct DecomposeSettings {
   /// The weight of one particle of a set of this kind.
   double weightOf(SetKind kind) const {
     return kind == SetKind::Fluid ? fluidWeight : kind == SetKind::Porous ? porousWeight : boundaryWeight;
+  }
+};
+
+/// Every particle of a system as a cut takes it: its position, its kind's weight, and a class by kind, so a cut can
+/// give each rank its share of the fluid and of the porous particles (Partition.hpp). Walls have none: they are
+/// only ever neighbours, computed in no phase of their own.
+struct WeightedParticles {
+  std::vector<Vec3> points;
+  std::vector<double> weights;
+  std::vector<int> classes;
+
+  WeightedParticles(const ParticleSystem& particles, const DecomposeSettings& settings);
+  /// Partition::build of these particles (of every process with `reductions`).
+  Partition cut(int parts, PartitionMethod method, const Reductions& reductions = {}) const {
+    return Partition::build(points, weights, parts, method, reductions, classes);
   }
 };
 

@@ -31,15 +31,9 @@ std::vector<std::size_t> countBoundaryParticles(const std::vector<Vec3>& points,
 
 DecomposedParticles decomposeParticles(const ParticleSystem& particles, const DecomposeSettings& settings) {
   const int parts = settings.subdomains;
-  std::vector<Vec3> points;
-  std::vector<double> weights;
-  points.reserve(particles.particleCount());
-  weights.reserve(particles.particleCount());
-  for (std::size_t s = 0; s < particles.size(); ++s) {
-    points.insert(points.end(), particles[s].x().begin(), particles[s].x().end());
-    weights.insert(weights.end(), particles[s].size(), settings.weightOf(particles[s].kind()));
-  }
-  const std::vector<int> owner = Partition::build(points, weights, parts, settings.method).owners(points);
+  const WeightedParticles weighted(particles, settings);
+  const std::vector<Vec3>& points = weighted.points;
+  const std::vector<int> owner = weighted.cut(parts, settings.method).owners(points);
 
   DecomposedParticles result;
   DecompositionSummary& summary = result.summary;

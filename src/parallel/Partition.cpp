@@ -3,6 +3,7 @@
 #include "core/Error.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <numeric>
@@ -70,8 +71,10 @@ std::uint64_t hilbertIndex(std::uint32_t i, std::uint32_t j, std::uint32_t k, in
 }
 
 Partition Partition::build(const std::vector<Vec3>& points, const std::vector<double>& weights, int parts,
-                           PartitionMethod method, const Reductions& reductions) {
+                           PartitionMethod method, const Reductions& reductions, const std::vector<int>& classes) {
   if (weights.size() != points.size()) throw std::logic_error("Partition::build: one weight per point expected");
+  if (!classes.empty() && classes.size() != points.size())
+    throw std::logic_error("Partition::build: one class per point expected");
   if (parts < 1) throw std::logic_error("Partition::build: at least one part expected");
   Partition p;
   p.parts_ = parts;
@@ -79,7 +82,9 @@ Partition Partition::build(const std::vector<Vec3>& points, const std::vector<do
   if (method == PartitionMethod::RecursiveBisection) {
     std::vector<std::size_t> slots(points.size());
     std::iota(slots.begin(), slots.end(), std::size_t{0});
-    p.buildNode(slots, points, weights, parts, 0, reductions);
+    const double largestClass =
+        reduced(reductions.max, classes.empty() ? 0.0 : *std::max_element(classes.begin(), classes.end()));
+    p.buildNode(slots, {points, weights, classes, static_cast<int>(largestClass) + 1, reductions}, parts, 0);
     return p;
   }
   // Hilbert curve: the grid spans every process's points.
@@ -137,39 +142,49 @@ Partition Partition::build(const std::vector<Vec3>& points, const std::vector<do
   return p;
 }
 
-int Partition::buildNode(std::vector<std::size_t>& slots, const std::vector<Vec3>& points,
-                         const std::vector<double>& weights, int parts, int first, const Reductions& reductions) {
+int Partition::buildNode(std::vector<std::size_t>& slots, const Weighted& in, int parts, int first) {
   const int index = static_cast<int>(nodes_.size());
   nodes_.emplace_back();
   if (parts == 1) {
     nodes_[static_cast<std::size_t>(index)].part = first;
     return index;
   }
+  const auto& points = in.points;
+  const auto& weights = in.weights;
+  const Reductions& reductions = in.reductions;
+  // Each class's weight, then the weight of the points in none (class < 0) last.
+  const std::size_t unclassed = static_cast<std::size_t>(in.classCount);
+  const auto classOf = [&](std::size_t i) {
+    const int c = in.classes.empty() ? 0 : in.classes[i];
+    return c < 0 ? unclassed : static_cast<std::size_t>(c);
+  };
   std::vector<double> lo(3, INFINITY), hi(3, -INFINITY);
-  double weight = 0.0;
+  std::vector<double> classWeight(unclassed + 1, 0.0);
   for (const std::size_t i : slots) {
     for (int a = 0; a < 3; ++a) {
       lo[a] = std::min(lo[a], points[i][a]);
       hi[a] = std::max(hi[a], points[i][a]);
     }
-    weight += weights[i];
+    classWeight[classOf(i)] += weights[i];
   }
   reductions.min(lo);
   reductions.max(hi);
-  const double total = reduced(reductions.sum, weight);
-  int axis = 0;
-  for (int a = 1; a < 3; ++a)
-    if (hi[a] - lo[a] > hi[axis] - lo[axis]) axis = a;
+  reductions.sum(classWeight);
+  const double total = std::accumulate(classWeight.begin(), classWeight.end(), 0.0);
+  classWeight.pop_back();
   const int left = parts / 2;
   const double target = total * left / parts;
-  const auto weightBelow = [&](double cut) {
-    double w = 0.0;
-    for (const std::size_t i : slots)
-      if (points[i][axis] < cut) w += weights[i];
-    return reduced(reductions.sum, w);
-  };
-  double cut = 0.0;
-  if (lo[axis] <= hi[axis]) { // some process holds points here
+
+  // The weighted median along `axis`, moved into the middle of the gap between the coordinates on either side, so
+  // that a particle that moves a little stays where it was.
+  const auto cutAlong = [&](int axis) {
+    if (!(lo[axis] <= hi[axis])) return 0.0; // no process holds points here
+    const auto weightBelow = [&](double cut) {
+      double w = 0.0;
+      for (const std::size_t i : slots)
+        if (points[i][axis] < cut) w += weights[i];
+      return reduced(reductions.sum, w);
+    };
     // Bisection on the coordinate, weight(< a) < target <= weight(< b), down to 1e-9 of the box: coordinates closer
     // than that count as one layer (about 30 halvings, each one reduction).
     double a = lo[axis], b = std::nextafter(hi[axis], INFINITY);
@@ -182,9 +197,7 @@ int Partition::buildNode(std::vector<std::size_t>& slots, const std::vector<Vec3
       (w < target ? a : b) = mid;
       (w < target ? weightA : weightB) = w;
     }
-    cut = closer(a, weightA, b, weightB, target);
-    // Into the middle of the gap between the coordinates on either side, so that a particle that moves a little
-    // stays where it was.
+    double cut = closer(a, weightA, b, weightB, target);
     double below = -INFINITY, above = INFINITY;
     for (const std::size_t i : slots) {
       const double x = points[i][axis];
@@ -199,13 +212,51 @@ int Partition::buildNode(std::vector<std::size_t>& slots, const std::vector<Vec3
       const double middle = below + 0.5 * (above - below);
       cut = middle > below ? middle : above;
     }
+    return cut;
+  };
+  // How far the cut leaves a class that carries a tenth of the weight or more from its share: the largest
+  // |class weight below / class weight - left / parts|.
+  const auto classMiss = [&](int axis, double cut) {
+    std::vector<double> below(unclassed + 1, 0.0);
+    for (const std::size_t i : slots)
+      if (points[i][axis] < cut) below[classOf(i)] += weights[i];
+    reductions.sum(below);
+    double miss = 0.0;
+    for (std::size_t c = 0; c < classWeight.size(); ++c)
+      if (classWeight[c] >= 0.1 * total)
+        miss = std::max(miss, std::abs(below[c] / classWeight[c] - static_cast<double>(left) / parts));
+    return miss;
+  };
+
+  std::array<int, 3> byLength{0, 1, 2}; // longest side first (the smaller interface), the lower axis on a tie
+  std::stable_sort(byLength.begin(), byLength.end(),
+                   [&](int a, int b) { return hi[a] - lo[a] > hi[b] - lo[b]; });
+  int axis = byLength[0];
+  double cut = cutAlong(axis);
+  int mixed = 0; // classes carrying a tenth of the weight or more
+  for (const double w : classWeight) mixed += w >= 0.1 * total ? 1 : 0;
+  if (mixed > 1) {
+    // The longest side whose cut misses no class's share by more than 5 % beyond the best side's: a layer's
+    // granularity on a short side does not outweigh its larger interface.
+    std::array<double, 3> cuts{}, misses{};
+    for (const int a : byLength) {
+      cuts[static_cast<std::size_t>(a)] = cutAlong(a);
+      misses[static_cast<std::size_t>(a)] = classMiss(a, cuts[static_cast<std::size_t>(a)]);
+    }
+    const double best = *std::min_element(misses.begin(), misses.end());
+    for (const int a : byLength)
+      if (misses[static_cast<std::size_t>(a)] <= best + 0.05) {
+        axis = a;
+        cut = cuts[static_cast<std::size_t>(a)];
+        break;
+      }
   }
   std::vector<std::size_t> leftSlots, rightSlots;
   for (const std::size_t i : slots) (points[i][axis] < cut ? leftSlots : rightSlots).push_back(i);
   slots.clear();
   slots.shrink_to_fit();
-  const int l = buildNode(leftSlots, points, weights, left, first, reductions);
-  const int r = buildNode(rightSlots, points, weights, parts - left, first + left, reductions);
+  const int l = buildNode(leftSlots, in, left, first);
+  const int r = buildNode(rightSlots, in, parts - left, first + left);
   Node& node = nodes_[static_cast<std::size_t>(index)];
   node.axis = axis;
   node.cut = cut;

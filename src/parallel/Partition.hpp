@@ -2,8 +2,13 @@
 /// Splitting weighted particles into subdomains (ARCHITECTURE.md "Decomposed runs"): each part gets an equal share
 /// of the total weight (the work its particles cost) and as compact a region as the method gives, since the halo a
 /// rank exchanges grows with its surface.
-///   recursiveBisection  cuts the longest side of the region's bounding box at the weighted median, recursively
-///                       (parts in proportion n/2 : n - n/2), so every part is a box and neighbours share faces;
+///   recursiveBisection  cuts the region's bounding box at the weighted median, recursively (parts in proportion
+///                       n/2 : n - n/2), so every part is a box and neighbours share faces. It cuts the longest side
+///                       unless another side's cut gives each class of particles (fluid, porous) a fairer share:
+///                       the phases of a step weigh the classes differently (only porous particles carry the
+///                       elastic solve), and ranks wait for each other after every phase, so a cut that balances
+///                       the sum but gives one rank the water and the other the solid leaves each idle half the
+///                       time;
 ///   hilbertCurve        orders space along a Hilbert curve (2^21 cells per side of the bounding box) and cuts it
 ///                       into n pieces of equal weight: ragged boundaries, but one number per cut.
 /// A Partition is a function of position (the cuts), so a particle that moves is owned by the part its new position
@@ -39,9 +44,11 @@ class Partition {
 public:
   /// Cuts the points of all processes (this one's `points`, `weights` > 0) into `parts` parts. Cuts fall between
   /// particle coordinates (a lattice layer is never split), each as close to its share of the weight as whole
-  /// particles (or layers) allow.
+  /// particles (or layers) allow. `classes` (one small number per point, < 0 for none; empty: one class)
+  /// lets recursiveBisection choose the side to cut by the balance of each class (above).
   static Partition build(const std::vector<Vec3>& points, const std::vector<double>& weights, int parts,
-                         PartitionMethod method, const Reductions& reductions = {});
+                         PartitionMethod method, const Reductions& reductions = {},
+                         const std::vector<int>& classes = {});
 
   int parts() const { return parts_; }
   /// The balance the cut gave (heaviest part over the mean, minus 1) when a run measured it, else negative: a run
@@ -63,8 +70,14 @@ private:
     int left = -1, right = -1;
     int part = 0; ///< a leaf's part
   };
-  int buildNode(std::vector<std::size_t>& slots, const std::vector<Vec3>& points, const std::vector<double>& weights,
-                int parts, int first, const Reductions& reductions);
+  struct Weighted {
+    const std::vector<Vec3>& points;
+    const std::vector<double>& weights;
+    const std::vector<int>& classes; ///< empty: one class; < 0: none
+    int classCount;                  ///< the largest class over every process, plus 1
+    const Reductions& reductions;
+  };
+  int buildNode(std::vector<std::size_t>& slots, const Weighted& in, int parts, int first);
   std::uint64_t keyOf(const Vec3& x) const;
 
   int parts_ = 1;

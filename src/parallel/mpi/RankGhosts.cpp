@@ -30,13 +30,7 @@ void RankGhosts::update(ParticleSystem& particles) {
   // Past what the cut itself gave (a cut never splits a lattice layer, so a small subdomain can not do better).
   if (partition_.imbalanceAtCut() < 0.0) partition_.setImbalanceAtCut(imbalance);
   if (imbalance > partition_.imbalanceAtCut() + settings_.rebalanceThreshold) {
-    std::vector<Vec3> points;
-    std::vector<double> weights;
-    for (std::size_t s = 0; s < particles.size(); ++s) {
-      points.insert(points.end(), particles[s].x().begin(), particles[s].x().end());
-      weights.insert(weights.end(), particles[s].size(), settings_.weightOf(particles[s].kind()));
-    }
-    partition_ = Partition::build(points, weights, comm_.size(), settings_.method, reductionsOver(comm_));
+    partition_ = WeightedParticles(particles, settings_).cut(comm_.size(), settings_.method, reductionsOver(comm_));
     const std::size_t moved =
         static_cast<std::size_t>(comm_.sum(static_cast<double>(migrate(particles, partition_, comm_))));
     const double after = comm_.max(weightOf(particles)) / mean - 1.0;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -144,6 +145,76 @@ TEST(Partition, OwnershipIsAFunctionOfPositionThatTilesSpace) {
       EXPECT_LT(part, 4);
     }
     EXPECT_GE(p.ownerOf(Vec3::Constant(std::numeric_limits<double>::quiet_NaN())), 0);
+  }
+}
+
+/// The published Seep set in miniature: a porous block (class 1, weight 1.75) of 8 x 8 x 8 layers under a fluid
+/// column (class 0) of 8 x 16 x 8, so the box is tallest along y.
+struct Stack {
+  std::vector<Vec3> points;
+  std::vector<double> weights;
+  std::vector<int> classes;
+};
+
+Stack blockUnderColumn() {
+  Stack s;
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 24; ++j)
+      for (int k = 0; k < 8; ++k) {
+        s.points.emplace_back(i + 0.5, j + 0.5, k + 0.5);
+        s.classes.push_back(j < 8 ? 1 : 0);
+        s.weights.push_back(j < 8 ? 1.75 : 1.0);
+      }
+  return s;
+}
+
+/// Per part, its share of each class's particles.
+std::vector<std::array<double, 2>> classShares(const Stack& s, const std::vector<int>& owner, int parts) {
+  std::vector<std::array<double, 2>> share(static_cast<std::size_t>(parts), {0.0, 0.0});
+  std::array<double, 2> count{0.0, 0.0};
+  for (std::size_t i = 0; i < owner.size(); ++i) {
+    share[static_cast<std::size_t>(owner[i])][static_cast<std::size_t>(s.classes[i])] += 1.0;
+    count[static_cast<std::size_t>(s.classes[i])] += 1.0;
+  }
+  for (auto& p : share)
+    for (std::size_t c = 0; c < 2; ++c) p[c] /= count[c];
+  return share;
+}
+
+TEST(Partition, BisectionGivesEachClassItsShareWhereTheLongestSideWouldNot) {
+  const Stack s = blockUnderColumn();
+  // Without classes the tall side is cut: the block's weight (1.75 x 512) plus the column's lowest 8 layers lie
+  // below the weighted median, so one part holds every porous particle.
+  const auto plain = Partition::build(s.points, s.weights, 2, PartitionMethod::RecursiveBisection).owners(s.points);
+  const auto plainShares = classShares(s, plain, 2);
+  EXPECT_TRUE(plainShares[0][1] == 1.0 || plainShares[1][1] == 1.0);
+  // With classes each part of 2 and of 4 holds its share of the block and of the column: 8 layers split evenly.
+  for (const int parts : {2, 4}) {
+    const auto owner =
+        Partition::build(s.points, s.weights, parts, PartitionMethod::RecursiveBisection, {}, s.classes)
+            .owners(s.points);
+    const auto shares = classShares(s, owner, parts);
+    for (int p = 0; p < parts; ++p)
+      for (std::size_t c = 0; c < 2; ++c)
+        EXPECT_DOUBLE_EQ(shares[static_cast<std::size_t>(p)][c], 1.0 / parts)
+            << parts << " parts, part " << p << ", class " << c;
+  }
+}
+
+TEST(Partition, OneClassCutsAsWithoutClasses) {
+  // The dam break's case: fluid, and walls in no class, cut the longest side.
+  const Cloud c = randomCloud(4000, 11);
+  std::vector<int> classes(c.points.size(), 0);
+  std::vector<double> weights = c.weights;
+  for (std::size_t i = 0; i < classes.size(); i += 40) {
+    classes[i] = -1;
+    weights[i] = 0.05;
+  }
+  for (const int parts : {2, 3, 5}) {
+    const Partition plain = Partition::build(c.points, weights, parts, PartitionMethod::RecursiveBisection);
+    const Partition classed =
+        Partition::build(c.points, weights, parts, PartitionMethod::RecursiveBisection, {}, classes);
+    EXPECT_EQ(plain.text(), classed.text()) << parts << " parts";
   }
 }
 
