@@ -88,7 +88,7 @@ void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& g
     walls.push_back({&ctx.search.list(a, k), &ps[k].x(), &ps[k].real(kBoundaryVolumeField), &g});
   }
 
-  parallel::forEach(set.size(), [&](std::size_t i) {
+  parallel::forEach(ctx.owned(a), [&](std::size_t i) {
     const Vec3 xi = x[i];
     double sumW = self * kernel.w0(); // volume factors times W, times V below
     double solidW = 0.0;              // fluid: sum (1 - phi_t) W_it
@@ -160,7 +160,7 @@ void computeSaturation(const StepContext& ctx, std::size_t a) {
   const NeighbourList& same = ctx.search.list(a, a);
   const CubicKernel& kernel = ctx.kernel;
   const double m = set.mass;
-  parallel::forEach(set.size(), [&](std::size_t i) {
+  parallel::forEach(ctx.owned(a), [&](std::size_t i) {
     if (phi == 0.0) {
       saturation[i] = fluidVolume[i] > 0.0 ? 1.0 : 0.0;
       return;
@@ -192,8 +192,17 @@ void registerDensityFields(ParticleSet& set) {
 void computeDensities(const StepContext& ctx, PairGradients& gradients) {
   gradients.resize(ctx.particles.size());
   for (std::size_t a : ctx.dynamicSets) computeSetDensities(ctx, a, gradients);
+  const bool anyMaterial = std::any_of(ctx.dynamicSets.begin(), ctx.dynamicSets.end(),
+                                       [&](std::size_t a) { return ctx.materials[a] != nullptr; });
+  if (!anyMaterial) return;
+  ctx.refreshGhosts({field::density}); // N_s sums the neighbours' densities, ghosts among them
   for (std::size_t a : ctx.dynamicSets)
     if (ctx.materials[a]) computeSaturation(ctx, a);
+}
+
+std::vector<std::string> densityFields() {
+  return {field::density, field::rhoTilde,  field::alpha,        field::gradSum,     field::saturation,
+          kFluidVolume,   field::localPorosity, field::wallShare, field::wallGradient};
 }
 
 } // namespace poro

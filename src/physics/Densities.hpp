@@ -10,6 +10,9 @@
 
 #include "physics/StepContext.hpp"
 
+#include <string>
+#include <vector>
+
 namespace poro {
 
 /// Registers the fields the density computation writes (saturation on porous sets, local porosity on
@@ -17,7 +20,11 @@ namespace poro {
 void registerDensityFields(ParticleSet& set);
 
 /// Computes rho~, rho, G and alpha of every dynamic set at the current positions, S and phi^loc, and fills
-/// `gradients` for every list between dynamic sets and from dynamic sets to walls.
+/// `gradients` for every list between dynamic sets and from dynamic sets to walls. In a parallel run for this
+/// rank's own particles: their ghosts' values come from their owners (densityFields()).
 void computeDensities(const StepContext& ctx, PairGradients& gradients);
+
+/// The fields computeDensities writes (those a set does not register are skipped where they are used).
+std::vector<std::string> densityFields();
 
 } // namespace poro

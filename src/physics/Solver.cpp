@@ -443,7 +443,11 @@ void Solver::searchNeighbours(double deltaT) {
     for (std::size_t b : dynamicSets_) wanted[a][b] = true;
     for (std::size_t k : boundarySets_) wanted[a][k] = true;
   }
-  search_.update(positions, wanted, largestStep);
+  // Ghosts are only neighbours: their owners compute them, and the step refreshes what it reads of them.
+  std::vector<std::size_t> listed;
+  if (ghosts_)
+    for (std::size_t s = 0; s < particles_.size(); ++s) listed.push_back(ghosts_->owned(s));
+  search_.update(positions, wanted, largestStep, listed);
 }
 
 bool Solver::skinHoldsOnEveryRank(double largestStep) const {
@@ -481,7 +485,10 @@ StepContext Solver::beginStep(double deltaT) {
     ScopedPhase phase(phases_, "densities");
     computeDensities(ctx, gradients_);
     initialiseWallContactLimits(ctx, flatWallShare_);
-    ctx.refreshGhosts(); // a ghost near the halo's edge misses neighbours: its owner's values are the right ones
+    // Ghosts came with every field from their owners (update, reattach); since then only these changed.
+    std::vector<std::string> changed = densityFields();
+    changed.push_back(field::wallContactLimit);
+    ctx.refreshGhosts(changed);
   }
   return ctx;
 }

@@ -119,8 +119,10 @@ void NeighbourSearch::assemble(std::size_t n, NeighbourList& list, const AppendN
 }
 
 void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positions,
-                             const std::vector<std::vector<bool>>& wanted, double largestStep) {
+                             const std::vector<std::vector<bool>>& wanted, double largestStep,
+                             const std::vector<std::size_t>& listed) {
   sets_ = positions.size();
+  listed_ = listed;
   ++updates_;
   if (!skinPays(largestStep)) {
     // A fast flow would cross the skin every step or two, and the grid search at H + skin would cost more
@@ -135,6 +137,7 @@ void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positi
     builtAt_.resize(sets_);
     for (std::size_t s = 0; s < sets_; ++s) builtAt_[s] = *positions[s];
     builtWanted_ = wanted;
+    builtListed_ = listed;
     valid_ = true;
   }
   // The lists at H: the candidates within H + skin that are within H now, ascending like the candidates, so
@@ -147,7 +150,9 @@ void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positi
       const auto& xa = *positions[a];
       const auto& xb = *positions[b];
       const NeighbourList& candidates = candidates_[a * sets_ + b];
+      const std::size_t withList = listedOf(a, xa.size());
       assemble(xa.size(), lists_[a * sets_ + b], [&](std::size_t i, std::vector<Index>& out) {
+        if (i >= withList) return;
         // Branch-free: three candidates in four are neighbours, in no order a predictor could learn.
         const Vec3& p = xa[i];
         const std::size_t used = out.size();
@@ -167,7 +172,7 @@ bool NeighbourSearch::skinPays(double largestStep) const { return skin_ > 0.0 &&
 
 bool NeighbourSearch::mustRebuild(const std::vector<const std::vector<Vec3>*>& positions,
                                   const std::vector<std::vector<bool>>& wanted) const {
-  if (!valid_ || wanted != builtWanted_ || builtAt_.size() != positions.size()) return true;
+  if (!valid_ || wanted != builtWanted_ || listed_ != builtListed_ || builtAt_.size() != positions.size()) return true;
   double largest = 0.0;
   for (std::size_t s = 0; s < positions.size(); ++s) {
     const auto& x = *positions[s];
@@ -233,7 +238,9 @@ void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positio
       if (!wanted[a][b]) continue;
       const SortedSet& s = sorted[b];
       const bool self = a == b;
+      const std::size_t withList = listedOf(a, xa.size());
       assemble(xa.size(), lists[a * sets_ + b], [&](std::size_t i, std::vector<Index>& out) {
+        if (i >= withList) return;
         const Vec3& p = xa[i];
         const CellIndex c = cellOf(p);
         const std::size_t before = out.size();

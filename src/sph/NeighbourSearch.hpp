@@ -11,6 +11,7 @@
 
 #include "core/Types.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -46,8 +47,10 @@ public:
   /// Positions of every set, by set number. `wanted[a][b]` says whether the list a->b is needed.
   /// Lists of a set with itself exclude the particle itself. `largestStep` bounds how far any particle moves
   /// before the next update [m] (largest speed times the step): the skin is used when it is below skin / 4.
+  /// `listed[a]` (when given) is how many of set a's first particles get lists; the others have empty ones but are
+  /// found as neighbours (a parallel run's ghosts, whose owners compute them).
   void update(const std::vector<const std::vector<Vec3>*>& positions, const std::vector<std::vector<bool>>& wanted,
-              double largestStep = 0.0);
+              double largestStep = 0.0, const std::vector<std::size_t>& listed = {});
 
   /// Whether update() uses the skin for a step of `largestStep` (else it searches at H in stencil order).
   bool skinPays(double largestStep) const;
@@ -78,6 +81,10 @@ private:
              double radius, std::vector<NeighbourList>& lists, bool ascending);
   bool mustRebuild(const std::vector<const std::vector<Vec3>*>& positions,
                    const std::vector<std::vector<bool>>& wanted) const;
+  /// Particles of set a that get lists in this update.
+  std::size_t listedOf(std::size_t a, std::size_t size) const {
+    return a < listed_.size() ? std::min(listed_[a], size) : size;
+  }
   /// Sets² empty lists, keeping their memory.
   void clearLists(std::vector<NeighbourList>& lists) const;
   /// Fills `list` for n particles in parallel; append(i, out) appends particle i's neighbours to out.
@@ -91,6 +98,8 @@ private:
   std::vector<NeighbourList> candidates_;      ///< lists at H + skin from the last grid search
   std::vector<std::vector<Vec3>> builtAt_;     ///< positions at the last grid search
   std::vector<std::vector<bool>> builtWanted_; ///< the lists requested then
+  std::vector<std::size_t> listed_;            ///< this update's `listed`
+  std::vector<std::size_t> builtListed_;       ///< the candidates' `listed`
   bool valid_ = false;
   std::size_t updates_ = 0;
   std::size_t gridSearches_ = 0;
