@@ -59,6 +59,13 @@ void Elasticity::registerFields(ParticleSet& set) {
     if (r.isZero()) r.setIdentity();
 }
 
+template <class F> void Elasticity::Body::forEachStressed(std::size_t n, const F& f) const {
+  if (stressed.empty())
+    parallel::forEach(n, f);
+  else
+    parallel::forEach(stressed.size(), [&](std::size_t k) { f(static_cast<std::size_t>(stressed[k])); });
+}
+
 bool Elasticity::enabled(const StepContext& ctx) const {
   return std::any_of(ctx.dynamicSets.begin(), ctx.dynamicSets.end(),
                      [&](std::size_t s) { return isElastic(ctx.materials[s]); });
@@ -100,7 +107,18 @@ void Elasticity::prepareBody(const StepContext& ctx, Body& body) {
   body.rotatedCorrection.resize(n);
   body.rhsStress.resize(n);
   body.stress.resize(n);
-  parallel::forEach(n, [&](std::size_t s) {
+  body.stressed.clear();
+  const std::size_t owned = ctx.owned(body.set);
+  if (owned < n) { // ghosts: rest neighbour lists are symmetric, so a ghost is read if an own particle is in its list
+    for (std::size_t s = 0; s < owned; ++s) body.stressed.push_back(static_cast<Index>(s));
+    for (std::size_t s = owned; s < n; ++s)
+      for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair)
+        if (static_cast<std::size_t>(rest.neighbour(pair)) < owned) {
+          body.stressed.push_back(static_cast<Index>(s));
+          break;
+        }
+  }
+  body.forEachStressed(n, [&](std::size_t s) {
     // Rotation first (METHOD.md §6.5.2).
     const Mat3 f = deformationGradient(rest, x, s);
     rotation[s] = extractRotation(f, rotation[s]);
@@ -147,7 +165,7 @@ void Elasticity::addApply(const linalg::BlockVector& u, const linalg::BlockVecto
     // All stresses first, then the forces (METHOD.md §6.5.4). The forces of own particles read the stresses of their
     // rest neighbours, ghosts among them in a parallel run: those are formed here too, from the ghosts' velocities
     // that follow the own ones in the storage (GhostExchange.hpp; the set's size counts both).
-    parallel::forEach(ctx_->particles[body.set].size(), [&](std::size_t s) {
+    body.forEachStressed(ctx_->particles[body.set].size(), [&](std::size_t s) {
       Mat3 gradient = Mat3::Zero();
       for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
         const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));

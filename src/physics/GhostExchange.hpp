@@ -20,7 +20,7 @@ public:
   /// Removes the ghosts: the sets hold this rank's own particles only (output, health checks, the next update).
   virtual void drop(ParticleSystem& particles) = 0;
   /// Ghosts again without migrating: where every rank still holds its own particles as at the last update, the same
-  /// ghosts in the same slots with every field from their owners (true); otherwise ghosts anew by the current
+  /// ghosts in the same slots with their state from their owners (true); otherwise ghosts anew by the current
   /// positions (false). Every rank gets the same answer.
   virtual bool reattach(ParticleSystem& particles) = 0;
   /// Set s's own particles are slots [0, owned(s)); the ghosts follow (after update, until drop).

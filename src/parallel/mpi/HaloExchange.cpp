@@ -49,6 +49,17 @@ std::size_t bytesPerParticle(const ParticleSet& set, const std::vector<std::stri
   return bytes;
 }
 
+/// The fields a particle of `set` is lent with: what a restart reads back (positions, velocities, pi, rotations, ...).
+/// The step computes a dynamic particle's other fields from these, and its owner's values of those reach the ghost
+/// at the refreshes where a neighbour reads them, as a restart computes them anew. Walls lend every field: their
+/// volumes are computed once, not every step.
+std::vector<std::string> lentFields(const ParticleSet& set) {
+  std::vector<std::string> names;
+  for (const ParticleSet::FieldInfo& f : set.fields())
+    if (set.kind() == SetKind::Boundary || f.role == Restart) names.push_back(f.name);
+  return names;
+}
+
 /// The fields of `names` that `set` has (all of its fields when `names` is empty): sets differ (a fluid set has no
 /// contact pressure), and every rank's set of one name has the same fields.
 std::vector<std::string> fieldsOf(const ParticleSet& set, const std::vector<std::string>& names) {
@@ -98,9 +109,13 @@ bool HaloExchange::restorable(const ParticleSystem& particles) const {
 }
 
 void HaloExchange::restore(ParticleSystem& particles, const Communicator& comm) {
-  for (std::size_t s = 0; s < particles.size(); ++s) particles[s].resize(owned_[s] + ghosts(s));
+  std::vector<std::vector<std::string>> fields(particles.size());
+  for (std::size_t s = 0; s < particles.size(); ++s) {
+    particles[s].resize(owned_[s] + ghosts(s));
+    fields[s] = lentFields(particles[s]);
+  }
   holdsGhosts_ = true;
-  refresh(particles, {}, comm);
+  refreshFields(particles, fields, comm);
 }
 
 void HaloExchange::pack(const ParticleSystem& particles, const std::vector<std::vector<std::string>>& fields,
@@ -117,7 +132,7 @@ void HaloExchange::pack(const ParticleSystem& particles, const std::vector<std::
         putCount(messages[q], lent_[s][q].size());
         putCount(messages[q], bytesPerParticle(particles[s], fields[s]));
       }
-      particles[s].pack(lent_[s][q], fields[s], messages[q]);
+      if (!fields[s].empty()) particles[s].pack(lent_[s][q], fields[s], messages[q]); // (empty: all, to pack)
     }
   }
 }
@@ -150,7 +165,7 @@ void HaloExchange::build(ParticleSystem& particles, double reach, const Communic
   }
 
   std::vector<std::vector<std::string>> fields(particles.size());
-  for (std::size_t s = 0; s < particles.size(); ++s) fields[s] = particles[s].fieldNames();
+  for (std::size_t s = 0; s < particles.size(); ++s) fields[s] = lentFields(particles[s]);
   std::vector<std::vector<char>> messages;
   pack(particles, fields, true, messages);
   const std::vector<std::vector<char>> received = comm.exchange(messages);
@@ -160,11 +175,11 @@ void HaloExchange::build(ParticleSystem& particles, double reach, const Communic
     for (std::size_t s = 0; s < particles.size() && !received[q].empty(); ++s) {
       ParticleSet& set = particles[s];
       const std::size_t count = takeCount(received[q], read[q]);
-      if (takeCount(received[q], read[q]) != bytesPerParticle(set, {}))
+      if (takeCount(received[q], read[q]) != bytesPerParticle(set, fields[s]))
         throw std::logic_error("HaloExchange: set '" + set.name() + "' has other fields on rank " + std::to_string(q));
       const std::size_t first = set.size();
       set.resize(first + count);
-      read[q] += set.unpack(received[q].data() + read[q], count, first, {});
+      read[q] += set.unpack(received[q].data() + read[q], count, first, fields[s]);
       received_[s][q] = count;
     }
 }
@@ -173,10 +188,15 @@ void HaloExchange::refresh(ParticleSystem& particles, const std::vector<std::str
                            const Communicator& comm) const {
   // Pack and unpack name the same fields on every rank: fieldsOf() depends on the set's registry only.
   std::vector<std::vector<std::string>> fields(particles.size());
+  for (std::size_t s = 0; s < particles.size(); ++s) fields[s] = fieldsOf(particles[s], names);
+  refreshFields(particles, fields, comm);
+}
+
+void HaloExchange::refreshFields(ParticleSystem& particles, const std::vector<std::vector<std::string>>& fields,
+                                 const Communicator& comm) const {
   std::vector<std::size_t> expected(received_.empty() ? 0 : received_.front().size(), 0);
   for (std::size_t s = 0; s < particles.size(); ++s) {
-    fields[s] = fieldsOf(particles[s], names);
-    const std::size_t bytes = bytesPerParticle(particles[s], fields[s]);
+    const std::size_t bytes = fields[s].empty() ? 0 : bytesPerParticle(particles[s], fields[s]);
     for (std::size_t q = 0; q < expected.size(); ++q) expected[q] += received_[s][q] * bytes;
   }
   pack(particles, fields, false, sendBuffers_);
@@ -186,7 +206,8 @@ void HaloExchange::refresh(ParticleSystem& particles, const std::vector<std::str
     std::size_t first = owned_[s];
     for (std::size_t q = 0; q < expected.size(); ++q) {
       const std::size_t count = received_[s][q];
-      if (count > 0) at[q] += particles[s].unpack(receiveBuffers_[q].data() + at[q], count, first, fields[s]);
+      if (count > 0 && !fields[s].empty())
+        at[q] += particles[s].unpack(receiveBuffers_[q].data() + at[q], count, first, fields[s]);
       first += count;
     }
   }

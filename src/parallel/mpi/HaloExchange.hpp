@@ -2,7 +2,8 @@
 /// Ghost particles of a parallel run (ARCHITECTURE.md "Decomposed runs"): each rank's sets hold its own particles
 /// first, then copies of the particles other ranks lend it, which the neighbour search sees as ordinary read-only
 /// particles. build() lends every particle within the reach (support radius plus skin) of another subdomain
-/// (parallel/HaloPattern.hpp) with all its fields; refresh() then updates chosen fields of the same ghosts at the
+/// (parallel/HaloPattern.hpp) with the fields a restart reads back (walls: all); refresh() then updates chosen fields
+/// of the same ghosts at the
 /// fixed points of a step where their owners changed them. Sets whose particles are linked by their rest positions
 /// (elastic bodies: each particle's rest neighbours, METHOD.md §4.1) can lend by those too (RestHalo).
 
@@ -35,8 +36,8 @@ public:
   void dropGhosts(ParticleSystem& particles);
   /// Whether this rank's sets hold exactly the own particles of the last build, without its ghosts (dropped).
   bool restorable(const ParticleSystem& particles) const;
-  /// Appends the ghosts of the last build again, in the same slots, with every field from their owners (every rank
-  /// restorable: no migration, reordering or removal since the build).
+  /// Appends the ghosts of the last build again, in the same slots, with the fields they are lent with from their
+  /// owners, as build() (every rank restorable: no migration, reordering or removal since the build).
   void restore(ParticleSystem& particles, const Communicator& comm);
 
   /// Set s holds its own particles in slots [0, owned(s)) and ghosts in [owned(s), owned(s) + ghosts(s)).
@@ -48,6 +49,9 @@ public:
 private:
   /// Into `messages`, one per rank: per set s, the particles lent to that rank (fields[s]); `withCounts` puts the
   /// particle count and bytes per particle ahead of each set's data. The buffers keep their memory.
+  /// refresh() with the fields of each set given: fields[s], none where it is empty.
+  void refreshFields(ParticleSystem& particles, const std::vector<std::vector<std::string>>& fields,
+                     const Communicator& comm) const;
   void pack(const ParticleSystem& particles, const std::vector<std::vector<std::string>>& fields, bool withCounts,
             std::vector<std::vector<char>>& messages) const;
   std::vector<std::size_t> owned_;                    ///< per set
