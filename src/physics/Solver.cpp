@@ -427,8 +427,10 @@ void Solver::searchNeighbours(double deltaT) {
   const double largestStep = maxSpeed() * deltaT;
   if (ghosts_) {
     // Between migrations the ranks keep their own particles in their slots and take the same ghosts again, so the
-    // skin's candidates stay valid; a fresh halo after a restart lists the same neighbours in the same order.
-    if (!sortNow && skinHoldsOnEveryRank(largestStep)) {
+    // skin's candidates stay valid; a fresh halo after a restart lists the same neighbours in the same order. The
+    // halo reaches H plus the skin, so it holds every neighbour until some particle has moved half the skin, even
+    // where the search itself runs at H (a fast flow): then every other step keeps it instead of none.
+    if (!sortNow && skinHoldsOnEveryRank()) {
       if (!ghosts_->reattach(particles_)) search_.invalidate();
     } else {
       ghosts_->update(particles_);
@@ -450,9 +452,8 @@ void Solver::searchNeighbours(double deltaT) {
   search_.update(positions, wanted, largestStep, listed);
 }
 
-bool Solver::skinHoldsOnEveryRank(double largestStep) const {
+bool Solver::skinHoldsOnEveryRank() const {
   const double skin = settings_.searchSkin * particles_.supportRadius();
-  if (!search_.skinPays(largestStep)) return false;
   double moved = 0.0; // NaN-proof: an origin never set (a start or a serial time directory) is infinitely far
   for (std::size_t s = 0; s < particles_.size(); ++s) {
     const auto& x = particles_[s].x();

@@ -95,8 +95,8 @@ private:
   StepContext context(double deltaT);
   void searchNeighbours(double deltaT);
   /// Parallel runs: whether the Verlet skin still holds over every rank since the last migration (searchOrigin), so
-  /// that the ranks keep their particles and ghosts instead of migrating and searching afresh.
-  bool skinHoldsOnEveryRank(double largestStep) const;
+  /// that the ranks keep their particles and ghosts instead of migrating and building a new halo.
+  bool skinHoldsOnEveryRank() const;
   /// Parallel runs: the own particles' searchOrigin, at a migration.
   void markSearchOrigins();
   double maxSpeed() const;

@@ -52,9 +52,6 @@ public:
   void update(const std::vector<const std::vector<Vec3>*>& positions, const std::vector<std::vector<bool>>& wanted,
               double largestStep = 0.0, const std::vector<std::size_t>& listed = {});
 
-  /// Whether update() uses the skin for a step of `largestStep` (else it searches at H in stencil order).
-  bool skinPays(double largestStep) const;
-
   /// The list of set a against set b (empty if it was not requested).
   const NeighbourList& list(std::size_t a, std::size_t b) const { return lists_[a * sets_ + b]; }
 
@@ -70,6 +67,8 @@ public:
   std::size_t gridSearches() const { return gridSearches_; }
 
 private:
+  /// Whether update() uses the skin for a step of `largestStep` (else it searches at H in stencil order).
+  bool skinPays(double largestStep) const;
   struct CellGrid {
     Vec3 origin = Vec3::Zero();
     std::int64_t dims[3] = {0, 0, 0};
