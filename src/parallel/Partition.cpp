@@ -229,8 +229,7 @@ int Partition::buildNode(std::vector<std::size_t>& slots, const Weighted& in, in
   };
 
   std::array<int, 3> byLength{0, 1, 2}; // longest side first (the smaller interface), the lower axis on a tie
-  std::stable_sort(byLength.begin(), byLength.end(),
-                   [&](int a, int b) { return hi[a] - lo[a] > hi[b] - lo[b]; });
+  std::stable_sort(byLength.begin(), byLength.end(), [&](int a, int b) { return hi[a] - lo[a] > hi[b] - lo[b]; });
   int axis = byLength[0];
   double cut = cutAlong(axis);
   int mixed = 0; // classes carrying a tenth of the weight or more

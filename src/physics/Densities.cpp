@@ -201,7 +201,7 @@ void computeDensities(const StepContext& ctx, PairGradients& gradients) {
 }
 
 std::vector<std::string> densityFields() {
-  return {field::density, field::rhoTilde,  field::alpha,        field::gradSum,     field::saturation,
+  return {field::density, field::rhoTilde,      field::alpha,     field::gradSum,     field::saturation,
           kFluidVolume,   field::localPorosity, field::wallShare, field::wallGradient};
 }
 

@@ -3,9 +3,9 @@
 /// first, then copies of the particles other ranks lend it, which the neighbour search sees as ordinary read-only
 /// particles. build() lends every particle within the reach (support radius plus skin) of another subdomain
 /// (parallel/HaloPattern.hpp) with the fields a restart reads back (walls: all); refresh() then updates chosen fields
-/// of the same ghosts at the
-/// fixed points of a step where their owners changed them. Sets whose particles are linked by their rest positions
-/// (elastic bodies: each particle's rest neighbours, METHOD.md §4.1) can lend by those too (RestHalo).
+/// of the same ghosts at the fixed points of a step where their owners changed them. Sets whose particles are linked
+/// by their rest positions (elastic bodies: each particle's rest neighbours, METHOD.md §4.1) can lend by those too
+/// (RestHalo).
 
 #include "parallel/mpi/Communicator.hpp"
 #include "sph/ParticleSystem.hpp"

@@ -190,9 +190,8 @@ TEST(Partition, BisectionGivesEachClassItsShareWhereTheLongestSideWouldNot) {
   EXPECT_TRUE(plainShares[0][1] == 1.0 || plainShares[1][1] == 1.0);
   // With classes each part of 2 and of 4 holds its share of the block and of the column: 8 layers split evenly.
   for (const int parts : {2, 4}) {
-    const auto owner =
-        Partition::build(s.points, s.weights, parts, PartitionMethod::RecursiveBisection, {}, s.classes)
-            .owners(s.points);
+    const auto owner = Partition::build(s.points, s.weights, parts, PartitionMethod::RecursiveBisection, {}, s.classes)
+                           .owners(s.points);
     const auto shares = classShares(s, owner, parts);
     for (int p = 0; p < parts; ++p)
       for (std::size_t c = 0; c < 2; ++c)
