@@ -231,10 +231,12 @@ int Partition::buildNode(std::vector<std::size_t>& slots, const Weighted& in, in
   std::array<int, 3> byLength{0, 1, 2}; // longest side first (the smaller interface), the lower axis on a tie
   std::stable_sort(byLength.begin(), byLength.end(), [&](int a, int b) { return hi[a] - lo[a] > hi[b] - lo[b]; });
   int axis = byLength[0];
-  double cut = cutAlong(axis);
+  double cut = 0.0;
   int mixed = 0; // classes carrying a tenth of the weight or more
   for (const double w : classWeight) mixed += w >= 0.1 * total ? 1 : 0;
-  if (mixed > 1) {
+  if (mixed < 2) {
+    cut = cutAlong(axis);
+  } else {
     // The longest side whose cut misses no class's share by more than 5 % beyond the best side's: a layer's
     // granularity on a short side does not outweigh its larger interface.
     std::array<double, 3> cuts{}, misses{};

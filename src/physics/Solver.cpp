@@ -486,7 +486,8 @@ StepContext Solver::beginStep(double deltaT) {
     ScopedPhase phase(phases_, "densities");
     computeDensities(ctx, gradients_);
     initialiseWallContactLimits(ctx, flatWallShare_);
-    // Ghosts came with every field from their owners (update, reattach); since then only these changed.
+    // Ghosts came with their owners' state (update, reattach) and computed none of these: the owners' are the right
+    // ones, and the later loops read them of neighbours.
     std::vector<std::string> changed = densityFields();
     changed.push_back(field::wallContactLimit);
     ctx.refreshGhosts(changed);

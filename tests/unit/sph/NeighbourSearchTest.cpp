@@ -467,5 +467,35 @@ TEST(NeighbourSearch, SkinSearchOfAFastFlowSearchesAtHEveryUpdate) {
   EXPECT_EQ(search.gridSearches(), search.updates());
 }
 
+// A parallel run's ghosts (the last particles of a set) get empty lists but are found as neighbours of the others;
+// the others' lists are those of a search of everything, in the same order, with and without the skin.
+TEST(NeighbourSearch, ParticlesBeyondListedAreNeighboursWithoutListsOfTheirOwn) {
+  const double h = 0.04;
+  Positions fluid = randomPoints(1200, Vec3::Zero(), Vec3(0.2, 0.2, 0.2), 14);
+  const Positions wall = randomPoints(400, Vec3(-0.05, -0.05, -0.05), Vec3(0.25, 0.0, 0.25), 15);
+  const std::vector<const Positions*> sets{&fluid, &wall};
+  const std::vector<std::vector<bool>> wanted{{true, true}, {false, false}};
+  const std::vector<std::size_t> listed{900, 400};
+  for (const double skin : {0.0, 0.1 * h}) {
+    NeighbourSearch some(h, skin);
+    for (int step = 0; step < 3; ++step) {
+      some.update(sets, wanted, 0.0, listed);
+      NeighbourSearch all(h, skin);
+      all.update(sets, wanted);
+      for (std::size_t b = 0; b < 2; ++b) {
+        const Lists got = toLists(some.list(0, b));
+        const Lists full = toLists(all.list(0, b));
+        ASSERT_EQ(got.size(), fluid.size());
+        for (std::size_t i = 0; i < fluid.size(); ++i)
+          if (i < listed[0])
+            EXPECT_EQ(got[i], full[i]) << "skin " << skin << ", step " << step << ", particle " << i;
+          else
+            EXPECT_TRUE(got[i].empty()) << "skin " << skin << ", step " << step << ", particle " << i;
+      }
+      for (auto& p : fluid) p += Vec3(0.0007, -0.0004, 0.0005);
+    }
+  }
+}
+
 } // namespace
 } // namespace poro
