@@ -29,6 +29,8 @@ public:
   virtual void refresh(ParticleSystem& particles, const std::vector<std::string>& names) const = 0;
   /// Over every rank.
   virtual double sum(double value) const = 0;
+  /// Element-wise over every rank, in place (the same length on every rank): one reduction for many sums.
+  virtual void sum(std::vector<double>& values) const = 0;
   /// Every rank's `values` (any length), concatenated in rank order.
   virtual std::vector<double> gather(const std::vector<double>& values) const = 0;
   virtual double max(double value) const = 0;

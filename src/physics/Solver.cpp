@@ -317,12 +317,16 @@ void Solver::moveRigidBodies(const StepContext& ctx, double deltaT) {
     centres.push_back(state_.rigidBodies[b].centre);
   }
   std::vector<Wrench> wrenches = rigidBodyWrenches(ctx, objects, centres, implicit_.wallReactions());
-  if (ghosts_) // each rank summed the forces of its own particles
-    for (Wrench& w : wrenches)
-      for (int c = 0; c < 3; ++c) {
-        w.force[c] = ghosts_->sum(w.force[c]);
-        w.torque[c] = ghosts_->sum(w.torque[c]);
-      }
+  if (ghosts_) { // each rank summed the forces of its own particles: one reduction for every body's wrench
+    std::vector<double> flat;
+    for (const Wrench& w : wrenches)
+      flat.insert(flat.end(), {w.force.x(), w.force.y(), w.force.z(), w.torque.x(), w.torque.y(), w.torque.z()});
+    ghosts_->sum(flat);
+    for (std::size_t b = 0; b < wrenches.size(); ++b) {
+      wrenches[b].force = Vec3(flat[6 * b], flat[6 * b + 1], flat[6 * b + 2]);
+      wrenches[b].torque = Vec3(flat[6 * b + 3], flat[6 * b + 4], flat[6 * b + 5]);
+    }
+  }
   for (std::size_t b = 0; b < rigidBodies_.size(); ++b)
     if (!rigidBodies_[b].heldAt(state_.time))
       rigidBodies_[b].integrate(state_.rigidBodies[b], wrenches[b].force + rigidBodies_[b].mass() * fluid_.gravity,

@@ -35,6 +35,10 @@ public:
     const Stopwatch watch(seconds_);
     return comm_.sum(value);
   }
+  void sum(std::vector<double>& values) const override {
+    const Stopwatch watch(seconds_);
+    comm_.sum(values);
+  }
   std::vector<double> gather(const std::vector<double>& values) const override {
     const Stopwatch watch(seconds_);
     return comm_.allGatherVaried(values);
