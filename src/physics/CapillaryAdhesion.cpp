@@ -36,13 +36,16 @@ void CapillaryAdhesion::prepare(const StepContext& ctx) {
     if (!material || material->capillaryStrength == 0.0) continue;
     const ParticleSet& solid = ctx.particles[t];
     const auto& saturation = solid.real(field::saturation);
+    const auto& fill = solid.real(field::poreFill);
+    const bool fades = ctx.poreFill != nullptr;
     const double strength = material->capillaryStrength, falloff = material->capillaryFalloff;
     const MixtureDensity rhoMix(fluid, *material);
     const CouplingSolidDensity rhoSolid(ctx, t);
     // c_it with i always the fluid particle, whichever side evaluates it.
     auto pairC = [&](std::size_t i, std::size_t s, double distance) {
-      return coefficient(strength, falloff, saturation[s], fluid.mass, rhoMix(i), solid.mass, rhoSolid(s),
-                         ctx.kernel.w(distance));
+      const double c = coefficient(strength, falloff, saturation[s], fluid.mass, rhoMix(i), solid.mass, rhoSolid(s),
+                                   ctx.kernel.w(distance));
+      return fades ? PoreFill::fade(fill[s]) * c : c;
     };
     for (const bool fluidSide : {true, false}) {
       if (used == sides_.size()) sides_.emplace_back();

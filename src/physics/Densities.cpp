@@ -157,20 +157,32 @@ void computeSaturation(const StepContext& ctx, std::size_t a) {
   const auto& rho = set.real(field::density);
   const auto& fluidVolume = set.real(kFluidVolume);
   auto& saturation = set.real(field::saturation);
+  // The pore fill only where the adhesion reads it.
+  const PoreFill* poreFill = ctx.materials[a]->capillaryStrength > 0.0 ? ctx.poreFill : nullptr;
+  auto& fill = set.real(field::poreFill);
+  const bool compressible = ctx.materials[a]->compressible;
+  double* restCoverage = poreFill && set.has(field::restCoverage) ? set.real(field::restCoverage).data() : nullptr;
   const NeighbourList& same = ctx.search.list(a, a);
   const CubicKernel& kernel = ctx.kernel;
   const double m = set.mass;
   parallel::forEach(ctx.owned(a), [&](std::size_t i) {
     if (phi == 0.0) {
-      saturation[i] = fluidVolume[i] > 0.0 ? 1.0 : 0.0;
+      saturation[i] = fill[i] = fluidVolume[i] > 0.0 ? 1.0 : 0.0;
       return;
     }
     double n = (m / rho[i]) * kernel.w0();
+    double coverage = poreFill ? poreFill->volumeWeight(0.0) : 0.0; // sum_t V Wbar_st
     for (Index jIndex : same.of(i)) {
       const std::size_t j = static_cast<std::size_t>(jIndex);
-      n += (m / rho[j]) * kernel.w((x[i] - x[j]).norm());
+      const double distance = (x[i] - x[j]).norm();
+      n += (m / rho[j]) * kernel.w(distance);
+      if (poreFill) coverage += poreFill->volumeWeight(distance);
     }
     saturation[i] = std::clamp(fluidVolume[i] / (phi * n), 0.0, 1.0);
+    if (!poreFill) return;
+    if (restCoverage && restCoverage[i] < 0.0) restCoverage[i] = coverage; // the first step: at rest
+    const double pores = PoreFill::poreVolume(phi, compressible, coverage, restCoverage ? restCoverage[i] : -1.0);
+    fill[i] = pores > 0.0 ? fluidVolume[i] / pores : (fluidVolume[i] > 0.0 ? 1e9 : 0.0); // squeezed shut
   });
 }
 
@@ -184,6 +196,7 @@ void registerDensityFields(ParticleSet& set) {
   if (set.kind() == SetKind::Porous) {
     set.addReal(field::saturation, Output);
     set.addReal(kFluidVolume);
+    set.addReal(field::poreFill);
   } else {
     set.addReal(field::localPorosity, Output);
   }
@@ -202,7 +215,7 @@ void computeDensities(const StepContext& ctx, PairGradients& gradients) {
 
 std::vector<std::string> densityFields() {
   return {field::density, field::rhoTilde,      field::alpha,     field::gradSum,     field::saturation,
-          kFluidVolume,   field::localPorosity, field::wallShare, field::wallGradient};
+          kFluidVolume,   field::poreFill,    field::localPorosity, field::wallShare, field::wallGradient};
 }
 
 } // namespace poro

@@ -16,6 +16,9 @@ inline constexpr const char* materialId = "materialId"; ///< porous: index of th
 inline constexpr const char* contactPressure = "contactPressure";
 /// compressible porous: the largest wall share D the particle may reach (WallContact.hpp)
 inline constexpr const char* wallContactLimit = "wallContactLimit";
+/// compressible porous whose adhesion fades in full pores: sum_t V Wbar_st at the particle's first step, the share
+/// of its kernel support its body covered at rest (PoreFill.hpp); -1 until then
+inline constexpr const char* restCoverage = "restCoverage";
 /// parallel runs: where the particle stood when the ranks last migrated and searched afresh; the Verlet skin is
 /// reused, without migrating, until some particle has moved half the skin from it (Solver::searchNeighbours) [m]
 inline constexpr const char* searchOrigin = "searchOrigin";
@@ -33,5 +36,7 @@ inline constexpr const char* accelP = "accelP";               ///< pressure acce
 inline constexpr const char* wallShare = "wallShare";         ///< compressible porous: D = sum_k V_k W_ak
 inline constexpr const char* wallShareStar = "wallShareStar"; ///< compressible porous: D predicted with v*
 inline constexpr const char* wallGradient = "wallGradient";   ///< compressible porous: sum_k V_k gradW_ak [1/m]
+/// porous: how full the pores near the particle are, 1 = full (PoreFill.hpp); only where the adhesion fades
+inline constexpr const char* poreFill = "poreFill";
 
 } // namespace poro::field

@@ -94,6 +94,9 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
   if (settings_.threads > 0) parallel::setThreads(settings_.threads);
   const double volume = particles_.particleVolume();
   if (settings_.pressure.latticeCorrectedPoreFluid) poreFluidBias_.emplace(kernel_, volume);
+  const bool adhesion = std::any_of(materials_.begin(), materials_.end(),
+                                    [](const PorousMaterial& m) { return m.capillaryStrength > 0.0; });
+  if (settings_.implicit.adhesionFadesInFullPores && adhesion) poreFill_.emplace(kernel_, volume);
   setMaterials_.assign(particles_.size(), nullptr);
   std::size_t fluidSets = 0;
   for (std::size_t s = 0; s < particles_.size(); ++s) {
@@ -370,6 +373,7 @@ void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
   auto& rest = set.addVec3(field::restPosition, Restart);
   if (material.youngsModulus > 0.0) Elasticity::registerFields(set);
   if (material.compressible) registerWallContactFields(set);
+  if (poreFill_ && material.compressible && material.capillaryStrength > 0.0) PoreFill::registerRestCoverage(set);
   // The rest state is the sampled one: X = x at step 0, read back from the time directory afterwards.
   if (state_.step == 0) rest = set.x();
   if (state_.step == 0) { // 0/ is rewritten at step 0: fixedBox must not stick to it, an edited one applies anew
@@ -400,7 +404,8 @@ StepContext Solver::context(double deltaT) {
                      settings_.compatibility,
                      state_.lastDeltaT,
                      poreFluidBias_ ? &*poreFluidBias_ : nullptr,
-                     ghosts_};
+                     ghosts_,
+                     poreFill_ ? &*poreFill_ : nullptr};
 }
 
 void Solver::computeWallVolumesWithGhosts() {

@@ -139,6 +139,7 @@ private:
   RunState state_;
   CubicKernel kernel_;
   std::optional<PoreFluidDensityBias> poreFluidBias_; ///< set when pressure.poreFluidDensity is latticeCorrected
+  std::optional<PoreFill> poreFill_; ///< set when implicit.adhesionInFullPores fades and some material adheres
   NeighbourSearch search_;
   PairGradients gradients_;
   std::vector<std::size_t> dynamicSets_, boundarySets_;

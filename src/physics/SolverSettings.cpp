@@ -48,11 +48,12 @@ CompatibilitySettings CompatibilitySettings::reference() {
 
 SolverSettings SolverSettings::read(const Dictionary& dict) {
   SolverSettings s;
-  // Compatibility first: naming a preset, paper or reference, asks for Eq. 4 as published, so it turns the
-  // default of pressure.poreFluidDensity back to paper (METHOD.md §3.3); the key itself still wins.
+  // Compatibility first: naming a preset, paper or reference, asks for Eq. 4 and 13 as published, so it turns the
+  // defaults of pressure.poreFluidDensity and implicit.adhesionInFullPores back to paper (METHOD.md §3.3,
+  // §6.5.6); the keys themselves still win.
   if (auto c = dict.optionalSubDict("compatibility")) {
     s.compatibility = readCompatibility(*c);
-    if (c->has("preset")) s.pressure.latticeCorrectedPoreFluid = false;
+    if (c->has("preset")) s.pressure.latticeCorrectedPoreFluid = s.implicit.adhesionFadesInFullPores = false;
     // The reference preset is the authors' iteration sweep for sweep (METHOD.md §10).
     if (c->has("preset") && c->getWord("preset", {"paper", "reference"}, "paper") == "reference")
       s.pressure.chebyshev = false;
@@ -78,6 +79,8 @@ SolverSettings SolverSettings::read(const Dictionary& dict) {
     is.tolerance = i->getReal("tolerance", is.tolerance, Range::open(0.0, 1.0));
     is.maxIterations = static_cast<int>(i->getInt("maxIterations", is.maxIterations, Range::closed(1, 1e6)));
     is.preconditioner = i->getWord("preconditioner", {"blockJacobi", "none"}, "blockJacobi") == "blockJacobi";
+    is.adhesionFadesInFullPores =
+        readSwitch(*i, "adhesionInFullPores", "paper", "fades", is.adhesionFadesInFullPores);
     i->checkUnknownKeys();
   }
   s.xsph = dict.getReal("xsph", s.xsph, Range::closed(0.0, 1.0));

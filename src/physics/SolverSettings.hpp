@@ -28,6 +28,9 @@ struct ImplicitSettings {
   double tolerance = 1e-4; ///< relative CG residual, (0, 1)
   int maxIterations = 100;
   bool preconditioner = true; ///< blockJacobi (true) or none
+  /// adhesionInFullPores: fades (true, PoreFill.hpp) | paper (false, Eq. 13 as it stands). Default fades; paper
+  /// when system/solverDict names a compatibility preset. The key, when given, always wins.
+  bool adhesionFadesInFullPores = true;
 };
 
 /// What a failed health check does: warn and go on, remove the particles concerned (with a warning), or stop

@@ -4,6 +4,7 @@
 #include "physics/FluidProperties.hpp"
 #include "physics/GhostExchange.hpp"
 #include "physics/PorousMaterial.hpp"
+#include "physics/PoreFill.hpp"
 #include "physics/PoreFluidDensityBias.hpp"
 #include "physics/SolverSettings.hpp"
 #include "sph/Kernel.hpp"
@@ -44,6 +45,7 @@ struct StepContext {
   double previousDt = 0.0;                      ///< the step size of the step before [s], 0 before the first
   const PoreFluidDensityBias* poreFluidBias = nullptr; ///< pressure.poreFluidDensity latticeCorrected, else null
   GhostExchange* ghosts = nullptr;                     ///< a parallel run's ranks, else null
+  const PoreFill* poreFill = nullptr; ///< implicit.adhesionInFullPores fades and some material adheres, else null
 
   /// Particles of set a this rank computes: all of them in a serial run.
   std::size_t owned(std::size_t a) const { return ghosts ? ghosts->owned(a) : particles[a].size(); }

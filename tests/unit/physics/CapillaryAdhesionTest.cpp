@@ -57,9 +57,10 @@ std::pair<Vec3, double> total(const linalg::BlockVector& v) {
 /// directly, so its contributions are seen alone (no mass, no other term).
 class Prepared {
 public:
-  Prepared(ParticleSystem ps, std::vector<PorousMaterial> materials, bool restDensity = false) {
+  Prepared(ParticleSystem ps, std::vector<PorousMaterial> materials, bool restDensity = false, bool fades = false) {
     SolverSettings settings = eq4AsPublished();                    // PairByHand evaluates Eq. 4 as published
     settings.compatibility.restCouplingSolidDensity = restDensity; // couplingSolidDensity: rest (METHOD.md §10)
+    settings.implicit.adhesionFadesInFullPores = fades;            // Eq. 13 as published unless asked
     solver_ = std::make_unique<Solver>(std::move(ps), weightless(), std::move(materials), settings, fixedStep(kDt),
                                        RunState{});
     ctx_ = std::make_unique<StepContext>(solver_->beginStep(kDt));
@@ -351,6 +352,26 @@ TEST(CapillaryFalloff, NoForceWhenFullySaturatedAndFalloffIsOne) {
       EXPECT_EQ(size, 0.0);
     else
       EXPECT_GT(size, 0.0);
+  }
+}
+
+TEST(CapillaryFade, OverFullPoresScaleTheCoefficientDownToNothing) {
+  // implicit.adhesionInFullPores: fades (PoreFill.hpp): the pairs of a solid particle whose pores hold more
+  // than 1.05 times their volume lose Eq. 13's coefficient linearly, none from 1.1 on; below 1.05 it is Eq. 13's.
+  const double distance = 1.5 * kR, phi = 0.5, rhoS = 2000.0, strength = 2500.0, falloff = 0.7;
+  const PairByHand pair(distance, phi, rhoS);
+  Prepared system(onePair(distance), {withCapillarity(material("sand", phi, rhoS, false), strength, falloff)}, false,
+                  true);
+  ASSERT_NE(system.ctx().poreFill, nullptr);
+  const double c = pair.c(strength, falloff, false);
+  for (const auto& [fill, factor] : std::vector<std::pair<double, double>>{{0.3, 1.0}, {1.05, 1.0}, {1.075, 0.5},
+                                                                            {1.1, 0.0}, {2.0, 0.0}}) {
+    system.set(1).real(field::poreFill)[0] = fill;
+    CapillaryAdhesion term;
+    term.prepare(system.ctx());
+    const linalg::BlockDiagonal d = system.diagonal(term);
+    for (std::size_t p = 0; p < 2; ++p)
+      EXPECT_NEAR(d[p].data[0](0, 0), factor * kDt * kDt * c, 1e-12 * kDt * kDt * c) << "fill " << fill;
   }
 }
 

@@ -112,6 +112,32 @@ TEST(PoreFluidDensity, TheKeyWinsOverDefaultAndPresetAndAnythingElseIsAnError) {
   }
 }
 
+TEST(AdhesionInFullPores, FadesByDefaultEitherPresetKeepsEq13AndTheKeyWins) {
+  // Not in the paper (PoreFill.hpp): without it, adhesion packs two pore volumes into bodies thinner than H.
+  const auto fades = [](const std::string& text) {
+    return SolverSettings::read(Dictionary::parse(text, "system/solverDict")).implicit.adhesionFadesInFullPores;
+  };
+  EXPECT_TRUE(fades("threads: 0\n"));
+  EXPECT_TRUE(SolverSettings{}.implicit.adhesionFadesInFullPores); // the struct states the file's default
+  EXPECT_TRUE(fades("compatibility: {volumetricStress: unitLambda}\n"));
+  EXPECT_FALSE(fades("compatibility: {preset: paper}\n"));
+  EXPECT_FALSE(fades("compatibility: {preset: reference}\n"));
+  EXPECT_FALSE(fades("implicit: {adhesionInFullPores: paper}\n"));
+  EXPECT_TRUE(fades("implicit: {adhesionInFullPores: fades}\ncompatibility: {preset: paper}\n"));
+  EXPECT_TRUE(fades("compatibility: {preset: reference}\nimplicit: {adhesionInFullPores: fades}\n"));
+  try {
+    fades("threads: 0\nimplicit:\n  adhesionInFullPores: stops\n");
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("system/solverDict:3"), std::string::npos) << message;
+    EXPECT_NE(message.find("fades"), std::string::npos) << message;
+  }
+  const SolverSettings file =
+      SolverSettings::read(Dictionary::read(std::string(POROSPH_TEST_DATA) + "/../../etc/caseDicts/solverDict"));
+  EXPECT_EQ(file.implicit.adhesionFadesInFullPores, SolverSettings{}.implicit.adhesionFadesInFullPores);
+}
+
 TEST(PressureAcceleration, ChebyshevByDefaultAndInPaperModeJacobiAloneUnderTheReferencePreset) {
   // The same fixed point and tolerance as the sweeps alone (PressureAccelerationTest.cpp); the reference preset
   // reproduces the authors' iteration sweep for sweep (METHOD.md §10).
