@@ -13,8 +13,11 @@
 /// denominator is the kernel's integral over the body's volume (within 2 % of it at faces, edges, corners and
 /// strokes one particle wide; the plain lattice sum over-counts the own particle, by 10 % on an edge), and the
 /// numerator is the same integral over the fluid. F_s = 1 where fluid fills the body's pores at the pore
-/// spacing. The adhesion coefficient of the pairs of s is multiplied by fade(F_s): 1 up to F = 1, 0 from
-/// F = 1 + kFadeWidth, linear between, so suction stops in full pores and never presses fluid into them.
+/// spacing. The adhesion coefficient of the pairs of s is multiplied by fade(F_s): 1 up to 1.05, 0 from 1.1,
+/// linear between, so suction never presses fluid into full pores. The fade starts above 1 because a full
+/// pore reads up to about 1.05: the coverage is good to 2.5 % and pore fluid at rest fills 0.99-1.03 phi V
+/// (PoreFluidDensityBias.hpp); the incompressible pore volume is phi times the coverage, a compressible one
+/// is poreVolume below.
 
 #include "sph/Kernel.hpp"
 
