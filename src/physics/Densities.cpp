@@ -214,8 +214,8 @@ void computeDensities(const StepContext& ctx, PairGradients& gradients) {
 }
 
 std::vector<std::string> densityFields() {
-  return {field::density, field::rhoTilde,      field::alpha,     field::gradSum,     field::saturation,
-          kFluidVolume,   field::poreFill,    field::localPorosity, field::wallShare, field::wallGradient};
+  return {field::density, field::rhoTilde, field::alpha,         field::gradSum,   field::saturation,
+          kFluidVolume,   field::poreFill, field::localPorosity, field::wallShare, field::wallGradient};
 }
 
 } // namespace poro

@@ -10,7 +10,7 @@
 /// pushes it out. The pore fill
 ///   F_s = sum_j V W_sj / (phi_s sum_t V Wbar_st),   t over the particles of s's material, s included,
 /// compares the fluid near s with the pore volume near s: Wbar is W averaged over a ball of volume V, so the
-/// denominator is the kernel's integral over the body's volume (within 2 % of it at faces, edges, corners and
+/// denominator is the kernel's integral over the body's volume (within 2.5 % of it at faces, edges, corners and
 /// strokes one particle wide; the plain lattice sum over-counts the own particle, by 10 % on an edge), and the
 /// numerator is the same integral over the fluid. F_s = 1 where fluid fills the body's pores at the pore
 /// spacing. The adhesion coefficient of the pairs of s is multiplied by fade(F_s): 1 up to 1.05, 0 from 1.1,

@@ -79,8 +79,7 @@ SolverSettings SolverSettings::read(const Dictionary& dict) {
     is.tolerance = i->getReal("tolerance", is.tolerance, Range::open(0.0, 1.0));
     is.maxIterations = static_cast<int>(i->getInt("maxIterations", is.maxIterations, Range::closed(1, 1e6)));
     is.preconditioner = i->getWord("preconditioner", {"blockJacobi", "none"}, "blockJacobi") == "blockJacobi";
-    is.adhesionFadesInFullPores =
-        readSwitch(*i, "adhesionInFullPores", "paper", "fades", is.adhesionFadesInFullPores);
+    is.adhesionFadesInFullPores = readSwitch(*i, "adhesionInFullPores", "paper", "fades", is.adhesionFadesInFullPores);
     i->checkUnknownKeys();
   }
   s.xsph = dict.getReal("xsph", s.xsph, Range::closed(0.0, 1.0));

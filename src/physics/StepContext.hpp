@@ -3,9 +3,9 @@
 
 #include "physics/FluidProperties.hpp"
 #include "physics/GhostExchange.hpp"
-#include "physics/PorousMaterial.hpp"
 #include "physics/PoreFill.hpp"
 #include "physics/PoreFluidDensityBias.hpp"
+#include "physics/PorousMaterial.hpp"
 #include "physics/SolverSettings.hpp"
 #include "sph/Kernel.hpp"
 #include "sph/NeighbourSearch.hpp"

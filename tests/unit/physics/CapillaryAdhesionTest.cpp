@@ -364,8 +364,8 @@ TEST(CapillaryFade, OverFullPoresScaleTheCoefficientDownToNothing) {
                   true);
   ASSERT_NE(system.ctx().poreFill, nullptr);
   const double c = pair.c(strength, falloff, false);
-  for (const auto& [fill, factor] : std::vector<std::pair<double, double>>{{0.3, 1.0}, {1.05, 1.0}, {1.075, 0.5},
-                                                                            {1.1, 0.0}, {2.0, 0.0}}) {
+  for (const auto& [fill, factor] :
+       std::vector<std::pair<double, double>>{{0.3, 1.0}, {1.05, 1.0}, {1.075, 0.5}, {1.1, 0.0}, {2.0, 0.0}}) {
     system.set(1).real(field::poreFill)[0] = fill;
     CapillaryAdhesion term;
     term.prepare(system.ctx());

@@ -34,7 +34,8 @@ double kernelIntegralOverCubes(const std::vector<Vec3>& sites) {
   for (const Vec3& c : sites)
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j)
-        for (int k = 0; k < n; ++k) sum += kernel.w(c + Vec3(-kR + h * (i + 0.5), -kR + h * (j + 0.5), -kR + h * (k + 0.5)));
+        for (int k = 0; k < n; ++k)
+          sum += kernel.w(c + Vec3(-kR + h * (i + 0.5), -kR + h * (j + 0.5), -kR + h * (k + 0.5)));
   return sum * h * h * h;
 }
 
@@ -52,12 +53,9 @@ TEST(PoreFill, BodyCoverageIsTheKernelIntegralOverTheBodyWhereTheLatticeSumIsNot
     double latticeExcess;    // least over-count of the plain lattice sum
   };
   const std::vector<Body> bodies{
-      {"interior", cells({-4, -4, -4}, {5, 5, 5}), -1.0},
-      {"face", cells({0, -4, -4}, {5, 5, 5}), 0.04},
-      {"edge", cells({0, 0, -4}, {5, 5, 5}), 0.08},
-      {"corner", cells({0, 0, 0}, {5, 5, 5}), 0.12},
-      {"stroke 2 x 2", cells({0, 0, -4}, {2, 2, 5}), 0.08},
-      {"stroke 1 x 1", cells({0, 0, -4}, {1, 1, 5}), 0.2},
+      {"interior", cells({-4, -4, -4}, {5, 5, 5}), -1.0},   {"face", cells({0, -4, -4}, {5, 5, 5}), 0.04},
+      {"edge", cells({0, 0, -4}, {5, 5, 5}), 0.08},         {"corner", cells({0, 0, 0}, {5, 5, 5}), 0.12},
+      {"stroke 2 x 2", cells({0, 0, -4}, {2, 2, 5}), 0.08}, {"stroke 1 x 1", cells({0, 0, -4}, {1, 1, 5}), 0.2},
   };
   for (const Body& body : bodies) {
     double coverage = 0.0, lattice = 0.0;
@@ -101,8 +99,8 @@ TEST(PoreFill, CompressiblePoresCloseWhenSqueezedAndOpenWhenSwollen) {
   EXPECT_DOUBLE_EQ(PoreFill::poreVolume(0.6, true, 0.8, 0.8), 0.6 * 0.8);
   EXPECT_DOUBLE_EQ(PoreFill::poreVolume(0.6, true, 1.2, 1.0), 1.0 - 0.4 * 1.2); // squeezed by 1/1.2
   EXPECT_DOUBLE_EQ(PoreFill::poreVolume(0.6, true, 0.8, 1.0), 1.0 - 0.4 * 0.8); // swollen
-  EXPECT_EQ(PoreFill::poreVolume(0.6, true, 3.0, 1.0), 0.0);                   // squeezed shut
-  EXPECT_DOUBLE_EQ(PoreFill::poreVolume(0.6, true, 0.8, -1.0), 0.6 * 0.8);     // rest not known yet
+  EXPECT_EQ(PoreFill::poreVolume(0.6, true, 3.0, 1.0), 0.0);                    // squeezed shut
+  EXPECT_DOUBLE_EQ(PoreFill::poreVolume(0.6, true, 0.8, -1.0), 0.6 * 0.8);      // rest not known yet
 }
 
 TEST(PoreFill, ReadsFullWhereFluidFillsAThinStrokesPoresAndSaturationDoesNot) {
