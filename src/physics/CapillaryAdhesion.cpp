@@ -36,8 +36,8 @@ void CapillaryAdhesion::prepare(const StepContext& ctx) {
     if (!material || material->capillaryStrength == 0.0) continue;
     const ParticleSet& solid = ctx.particles[t];
     const auto& saturation = solid.real(field::saturation);
-    const auto& fill = solid.real(field::poreFill);
     const bool fades = ctx.poreFill != nullptr;
+    const double* fill = fades ? solid.real(field::poreFill).data() : nullptr;
     const double strength = material->capillaryStrength, falloff = material->capillaryFalloff;
     const MixtureDensity rhoMix(fluid, *material);
     const CouplingSolidDensity rhoSolid(ctx, t);

@@ -159,7 +159,7 @@ void computeSaturation(const StepContext& ctx, std::size_t a) {
   auto& saturation = set.real(field::saturation);
   // The pore fill only where the adhesion reads it.
   const PoreFill* poreFill = ctx.materials[a]->capillaryStrength > 0.0 ? ctx.poreFill : nullptr;
-  auto& fill = set.real(field::poreFill);
+  double* fill = poreFill ? set.real(field::poreFill).data() : nullptr;
   const bool compressible = ctx.materials[a]->compressible;
   double* restCoverage = poreFill && set.has(field::restCoverage) ? set.real(field::restCoverage).data() : nullptr;
   const NeighbourList& same = ctx.search.list(a, a);
@@ -167,7 +167,8 @@ void computeSaturation(const StepContext& ctx, std::size_t a) {
   const double m = set.mass;
   parallel::forEach(ctx.owned(a), [&](std::size_t i) {
     if (phi == 0.0) {
-      saturation[i] = fill[i] = fluidVolume[i] > 0.0 ? 1.0 : 0.0;
+      saturation[i] = fluidVolume[i] > 0.0 ? 1.0 : 0.0;
+      if (fill) fill[i] = saturation[i];
       return;
     }
     double n = (m / rho[i]) * kernel.w0();
@@ -196,7 +197,6 @@ void registerDensityFields(ParticleSet& set) {
   if (set.kind() == SetKind::Porous) {
     set.addReal(field::saturation, Output);
     set.addReal(kFluidVolume);
-    set.addReal(field::poreFill);
   } else {
     set.addReal(field::localPorosity, Output);
   }

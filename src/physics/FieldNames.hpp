@@ -36,7 +36,8 @@ inline constexpr const char* accelP = "accelP";               ///< pressure acce
 inline constexpr const char* wallShare = "wallShare";         ///< compressible porous: D = sum_k V_k W_ak
 inline constexpr const char* wallShareStar = "wallShareStar"; ///< compressible porous: D predicted with v*
 inline constexpr const char* wallGradient = "wallGradient";   ///< compressible porous: sum_k V_k gradW_ak [1/m]
-/// porous: how full the pores near the particle are, 1 = full (PoreFill.hpp); only where the adhesion fades
+/// porous of an adhering material whose adhesion fades: how full the pores near the particle are, 1 = full
+/// (PoreFill.hpp)
 inline constexpr const char* poreFill = "poreFill";
 
 } // namespace poro::field

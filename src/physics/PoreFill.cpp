@@ -70,7 +70,9 @@ double PoreFill::poreVolume(double porosity, bool compressible, double coverage,
   return std::max(restCoverage - (1.0 - porosity) * coverage, 0.0);
 }
 
-void PoreFill::registerRestCoverage(ParticleSet& set) {
+void PoreFill::registerFields(ParticleSet& set, const PorousMaterial& material) {
+  set.addReal(field::poreFill);
+  if (!material.compressible) return;
   const bool held = set.has(field::restCoverage);
   auto& coverage = set.addReal(field::restCoverage, Restart);
   if (!held) std::fill(coverage.begin(), coverage.end(), -1.0);

@@ -19,6 +19,7 @@
 /// (PoreFluidDensityBias.hpp); the incompressible pore volume is phi times the coverage, a compressible one
 /// is poreVolume below.
 
+#include "physics/PorousMaterial.hpp"
 #include "sph/Kernel.hpp"
 
 #include <vector>
@@ -42,8 +43,9 @@ public:
   /// restCoverage - (1 - phi) coverage, at least 0.
   static double poreVolume(double porosity, bool compressible, double coverage, double restCoverage);
 
-  /// Adds the restart field restCoverage, -1 where it was not read back (set at the particle's first step).
-  static void registerRestCoverage(ParticleSet& set);
+  /// Adds poreFill to the set of an adhering material and, for a compressible one, the restart field
+  /// restCoverage, -1 where it was not read back (set at the particle's first step).
+  static void registerFields(ParticleSet& set, const PorousMaterial& material);
 
   /// The factor on the adhesion coefficient of a solid particle whose pores are filled to `fill`.
   static double fade(double fill);

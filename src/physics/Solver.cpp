@@ -373,7 +373,7 @@ void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
   auto& rest = set.addVec3(field::restPosition, Restart);
   if (material.youngsModulus > 0.0) Elasticity::registerFields(set);
   if (material.compressible) registerWallContactFields(set);
-  if (poreFill_ && material.compressible && material.capillaryStrength > 0.0) PoreFill::registerRestCoverage(set);
+  if (poreFill_ && material.capillaryStrength > 0.0) PoreFill::registerFields(set, material);
   // The rest state is the sampled one: X = x at step 0, read back from the time directory afterwards.
   if (state_.step == 0) rest = set.x();
   if (state_.step == 0) { // 0/ is rewritten at step 0: fixedBox must not stick to it, an edited one applies anew
