@@ -26,6 +26,9 @@ constexpr std::size_t kChunk = 512;
 constexpr double kCellWidening = 1.0 + 1e-6;
 /// The skin is used when the candidates will last two updates at least: 2 x 2 x largestStep < skin.
 constexpr double kStepsPerSkin = 4.0;
+/// The grid search runs again once more than one listed particle in this many is a mover: each mover costs
+/// a search of its own at every update, and a few times that in the others' lists.
+constexpr std::size_t kParticlesPerMover = 32;
 
 /// Insertion sort: a list gathered cell by cell from Morton-ordered particles is nearly ascending already.
 void sortAscending(Index* first, Index* last) {
@@ -41,12 +44,10 @@ struct CellIndex {
   std::int64_t ix, iy, iz;
 };
 
-/// Particles of one set sorted by cell (counting sort), with a copy of their positions in that order.
-struct SortedSet {
-  std::vector<std::int64_t> cellStart; // nCells + 1
-  std::vector<Index> index;            // original index in cell order
-  std::vector<Vec3> x;                 // positions in cell order
-};
+/// Cell coordinate of x along one axis, floor-based: below 0 or beyond the grid when x is outside it.
+std::int64_t cellCoordinate(double x, double origin, double invCell) {
+  return static_cast<std::int64_t>(std::floor((x - origin) * invCell));
+}
 
 } // namespace
 
@@ -64,6 +65,7 @@ NeighbourSearch::CellGrid NeighbourSearch::makeGrid(const std::vector<const std:
   if (lo.x() > hi.x()) return grid; // no particles
   grid.origin = lo;
   const double cellSize = radius * kCellWidening;
+  grid.cellSize = cellSize;
   double cells = 1.0;
   for (int d = 0; d < 3; ++d) {
     grid.dims[d] = static_cast<std::int64_t>(std::floor((hi[d] - lo[d]) / cellSize)) + 1;
@@ -132,56 +134,200 @@ void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positi
     build(positions, wanted, h_, lists_, false);
     return;
   }
-  if (mustRebuild(positions, wanted)) {
+  std::size_t listedParticles = 0;
+  for (std::size_t a = 0; a < sets_; ++a)
+    if (std::find(wanted[a].begin(), wanted[a].end(), true) != wanted[a].end())
+      listedParticles += listedOf(a, positions[a]->size());
+  if (candidatesStale(positions, wanted) || findMovers(positions) * kParticlesPerMover > listedParticles) {
     build(positions, wanted, h_ + skin_, candidates_, true);
     builtAt_.resize(sets_);
     for (std::size_t s = 0; s < sets_; ++s) builtAt_[s] = *positions[s];
     builtWanted_ = wanted;
     builtListed_ = listed;
     valid_ = true;
-  }
-  // The lists at H: the candidates within H + skin that are within H now, ascending like the candidates, so
-  // they do not depend on when the candidates were searched.
-  clearLists(lists_);
-  const double h2 = h_ * h_;
-  for (std::size_t a = 0; a < sets_; ++a)
-    for (std::size_t b = 0; b < sets_; ++b) {
-      if (!wanted[a][b]) continue;
-      const auto& xa = *positions[a];
-      const auto& xb = *positions[b];
-      const NeighbourList& candidates = candidates_[a * sets_ + b];
-      const std::size_t withList = listedOf(a, xa.size());
-      assemble(xa.size(), lists_[a * sets_ + b], [&](std::size_t i, std::vector<Index>& out) {
-        if (i >= withList) return;
-        // Branch-free: three candidates in four are neighbours, in no order a predictor could learn.
-        const Vec3& p = xa[i];
-        const std::size_t used = out.size();
-        out.resize(used + candidates.of(i).size());
-        Index* const dst = out.data() + used;
-        std::size_t kept = 0;
-        for (const Index j : candidates.of(i)) {
-          dst[kept] = j;
-          kept += static_cast<std::size_t>((p - xb[static_cast<std::size_t>(j)]).squaredNorm() < h2);
-        }
-        out.resize(used + kept);
-      });
+    isMover_.resize(sets_);
+    movers_.resize(sets_);
+    for (std::size_t s = 0; s < sets_; ++s) {
+      isMover_[s].clear();
+      movers_[s].clear();
     }
+  }
+  // The movers by their positions now, for the searches around them and their own.
+  std::vector<std::vector<Vec3>> moverX(sets_);
+  std::vector<const std::vector<Vec3>*> moverPositions;
+  for (std::size_t s = 0; s < sets_; ++s) {
+    for (const Index j : movers_[s]) moverX[s].push_back((*positions[s])[static_cast<std::size_t>(j)]);
+    moverPositions.push_back(&moverX[s]);
+  }
+  moverGrid_ = makeGrid(moverPositions, h_);
+  moverCells_.resize(sets_);
+  for (std::size_t s = 0; s < sets_; ++s) sortIntoCells(moverX[s], moverGrid_, moverCells_[s], nullptr);
+
+  // The lists at H: the neighbours within H now, ascending like the candidates, so they do not depend on when
+  // the candidates were searched.
+  clearLists(lists_);
+  for (std::size_t a = 0; a < sets_; ++a)
+    for (std::size_t b = 0; b < sets_; ++b)
+      if (wanted[a][b]) filterCandidates(positions, a, b);
+}
+
+void NeighbourSearch::filterCandidates(const std::vector<const std::vector<Vec3>*>& positions, std::size_t a,
+                                       std::size_t b) {
+  const auto& xa = *positions[a];
+  const auto& xb = *positions[b];
+  const NeighbourList& candidates = candidates_[a * sets_ + b];
+  const std::size_t withList = listedOf(a, xa.size());
+  const double h2 = h_ * h_;
+  const std::uint8_t* const aMoves = isMover_[a].empty() ? nullptr : isMover_[a].data();
+  const std::uint8_t* const bMoves = isMover_[b].empty() ? nullptr : isMover_[b].data();
+
+  // Particles of a that b's movers came near, as (particle, mover) pairs grouped by particle, movers ascending.
+  std::vector<std::uint32_t>& extraStart = extraStart_;
+  std::vector<Index>& extras = extras_;
+  extras.clear();
+  if (bMoves) {
+    std::vector<std::pair<Index, Index>> pairs;
+    std::vector<Index> near;
+    for (const Index f : movers_[b]) {
+      near.clear();
+      const std::int64_t self = a == b ? static_cast<std::int64_t>(f) : -1;
+      searchAround(positions, a, xb[static_cast<std::size_t>(f)], self, false, near);
+      for (const Index i : near)
+        if (static_cast<std::size_t>(i) < withList && !(aMoves && aMoves[i])) pairs.emplace_back(i, f);
+    }
+    memory::resizeForRefill(extraStart, xa.size() + 1);
+    std::fill(extraStart.begin(), extraStart.end(), 0u);
+    for (const auto& pair : pairs) ++extraStart[static_cast<std::size_t>(pair.first) + 1];
+    for (std::size_t i = 0; i < xa.size(); ++i) extraStart[i + 1] += extraStart[i];
+    extras.resize(pairs.size());
+    std::vector<std::uint32_t> fill(extraStart.begin(), extraStart.end() - 1);
+    for (const auto& pair : pairs) extras[fill[static_cast<std::size_t>(pair.first)]++] = pair.second;
+  }
+
+  assemble(xa.size(), lists_[a * sets_ + b], [&](std::size_t i, std::vector<Index>& out) {
+    if (i >= withList) return;
+    const Vec3& p = xa[i];
+    const std::size_t used = out.size();
+    if (aMoves && aMoves[i]) { // its candidates are out of date: searched afresh
+      searchAround(positions, b, p, a == b ? static_cast<std::int64_t>(i) : -1, true, out);
+      sortAscending(out.data() + used, out.data() + out.size());
+      return;
+    }
+    // Branch-free: three candidates in four are neighbours, in no order a predictor could learn. The movers
+    // of b are left out here: they come from the search around them, in `extras`.
+    out.resize(used + candidates.of(i).size());
+    Index* const dst = out.data() + used;
+    std::size_t kept = 0;
+    if (bMoves) {
+      for (const Index j : candidates.of(i)) {
+        dst[kept] = j;
+        kept += static_cast<std::size_t>(((p - xb[static_cast<std::size_t>(j)]).squaredNorm() < h2) & (bMoves[j] == 0));
+      }
+    } else {
+      for (const Index j : candidates.of(i)) {
+        dst[kept] = j;
+        kept += static_cast<std::size_t>((p - xb[static_cast<std::size_t>(j)]).squaredNorm() < h2);
+      }
+    }
+    out.resize(used + kept);
+    if (bMoves && extraStart[i] != extraStart[i + 1]) {
+      out.insert(out.end(), extras.begin() + extraStart[i], extras.begin() + extraStart[i + 1]);
+      sortAscending(out.data() + used, out.data() + out.size());
+    }
+  });
+}
+
+void NeighbourSearch::searchAround(const std::vector<const std::vector<Vec3>*>& positions, std::size_t b,
+                                   const Vec3& p, std::int64_t self, bool withMovers, std::vector<Index>& out) const {
+  const auto& xb = *positions[b];
+  const double h2 = h_ * h_;
+  const std::uint8_t* const moves = isMover_[b].empty() ? nullptr : isMover_[b].data();
+  auto visit = [&](const CellGrid& grid, const CellSort& cells, const auto& particle) {
+    if (cells.cellStart.empty()) return;
+    std::int64_t lo[3], hi[3];
+    for (int d = 0; d < 3; ++d) {
+      const std::int64_t c = cellCoordinate(p[d], grid.origin[d], 1.0 / grid.cellSize);
+      lo[d] = std::max<std::int64_t>(c - 1, 0);
+      hi[d] = std::min(c + 1, grid.dims[d] - 1);
+      if (lo[d] > hi[d]) return; // p is more than a cell outside the grid
+    }
+    for (std::int64_t z = lo[2]; z <= hi[2]; ++z)
+      for (std::int64_t y = lo[1]; y <= hi[1]; ++y) {
+        const std::int64_t row = grid.dims[0] * (y + grid.dims[1] * z);
+        for (std::int64_t k = cells.cellStart[row + lo[0]]; k < cells.cellStart[row + hi[0] + 1]; ++k) {
+          const Index j = particle(cells.index[static_cast<std::size_t>(k)]);
+          if (j < 0 || j == self) continue;
+          if ((p - xb[static_cast<std::size_t>(j)]).squaredNorm() < h2) out.push_back(j);
+        }
+      }
+  };
+  // Particles that moved less than skin / 2 since the grid search: within H of p now, they were within H + skin
+  // of it then, in the 27 cells of H + skin around p.
+  visit(builtGrid_, builtCells_[b], [&](Index j) { return moves && moves[j] ? Index(-1) : j; });
+  if (withMovers) visit(moverGrid_, moverCells_[b], [&](Index k) { return movers_[b][static_cast<std::size_t>(k)]; });
 }
 
 bool NeighbourSearch::skinPays(double largestStep) const { return skin_ > 0.0 && kStepsPerSkin * largestStep < skin_; }
 
-bool NeighbourSearch::mustRebuild(const std::vector<const std::vector<Vec3>*>& positions,
-                                  const std::vector<std::vector<bool>>& wanted) const {
+bool NeighbourSearch::candidatesStale(const std::vector<const std::vector<Vec3>*>& positions,
+                                      const std::vector<std::vector<bool>>& wanted) const {
   if (!valid_ || wanted != builtWanted_ || listed_ != builtListed_ || builtAt_.size() != positions.size()) return true;
-  double largest = 0.0;
-  for (std::size_t s = 0; s < positions.size(); ++s) {
+  for (std::size_t s = 0; s < positions.size(); ++s)
+    if (positions[s]->size() != builtAt_[s].size()) return true;
+  return false;
+}
+
+std::size_t NeighbourSearch::findMovers(const std::vector<const std::vector<Vec3>*>& positions) {
+  isMover_.resize(sets_);
+  movers_.resize(sets_);
+  std::size_t total = 0;
+  for (std::size_t s = 0; s < sets_; ++s) {
     const auto& x = *positions[s];
     const auto& x0 = builtAt_[s];
-    if (x.size() != x0.size()) return true;
-    largest = std::max(largest, parallel::max(x.size(), 0.0, [&](std::size_t i) { return (x[i] - x0[i]).norm(); }));
+    std::vector<std::uint8_t>& moves = isMover_[s];
+    movers_[s].clear();
+    // Two particles that each moved less than skin / 2 since the grid search are still candidates if within H.
+    auto moved = [&](std::size_t i) { return 2.0 * (x[i] - x0[i]).norm() >= skin_; };
+    const std::size_t count = parallel::sum<std::size_t>(x.size(), [&](std::size_t i) { return moved(i) ? 1 : 0; });
+    if (count == 0) {
+      moves.clear();
+      continue;
+    }
+    moves.resize(x.size());
+    parallel::forEach(x.size(), [&](std::size_t i) { moves[i] = moved(i) ? 1 : 0; });
+    movers_[s].reserve(count);
+    for (std::size_t i = 0; i < x.size(); ++i)
+      if (moves[i]) movers_[s].push_back(static_cast<Index>(i));
+    total += count;
   }
-  // Two particles that each moved less than skin / 2 since the build are still listed if within H.
-  return 2.0 * largest >= skin_;
+  return total;
+}
+
+void NeighbourSearch::sortIntoCells(const std::vector<Vec3>& xs, const CellGrid& grid, CellSort& cells,
+                                    std::vector<Vec3>* inOrder) {
+  const std::int64_t nx = grid.dims[0], ny = grid.dims[1], nz = grid.dims[2];
+  const std::int64_t nCells = nx * ny * nz;
+  const double invCell = 1.0 / grid.cellSize;
+  const std::size_t n = xs.size();
+  std::vector<std::int64_t> cell(n);
+  parallel::forEach(n, [&](std::size_t i) {
+    const Vec3& p = xs[i];
+    const std::int64_t ix = std::min(static_cast<std::int64_t>((p.x() - grid.origin.x()) * invCell), nx - 1);
+    const std::int64_t iy = std::min(static_cast<std::int64_t>((p.y() - grid.origin.y()) * invCell), ny - 1);
+    const std::int64_t iz = std::min(static_cast<std::int64_t>((p.z() - grid.origin.z()) * invCell), nz - 1);
+    cell[i] = ix + nx * (iy + ny * iz);
+  });
+  cells.cellStart.assign(static_cast<std::size_t>(nCells) + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) ++cells.cellStart[static_cast<std::size_t>(cell[i]) + 1];
+  for (std::int64_t c = 0; c < nCells; ++c) cells.cellStart[c + 1] += cells.cellStart[c];
+  std::vector<std::int64_t> fill(cells.cellStart.begin(), cells.cellStart.end() - 1);
+  cells.index.resize(n);
+  if (inOrder) inOrder->resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::int64_t k = fill[static_cast<std::size_t>(cell[i])]++;
+    cells.index[static_cast<std::size_t>(k)] = static_cast<Index>(i);
+    if (inOrder) (*inOrder)[static_cast<std::size_t>(k)] = xs[i];
+  }
 }
 
 void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positions,
@@ -191,8 +337,7 @@ void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positio
   clearLists(lists);
   const CellGrid grid = makeGrid(positions, radius);
   const std::int64_t nx = grid.dims[0], ny = grid.dims[1], nz = grid.dims[2];
-  const std::int64_t nCells = nx * ny * nz;
-  const double invCell = 1.0 / (radius * kCellWidening);
+  const double invCell = 1.0 / grid.cellSize;
   const double radius2 = radius * radius;
 
   auto cellOf = [&](const Vec3& p) {
@@ -205,38 +350,22 @@ void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positio
     return c;
   };
 
-  // Sort every set that is searched in by cell.
-  std::vector<SortedSet> sorted(sets_);
+  // Sort every set that is searched in by cell, with a copy of its positions in that order. A grid search at
+  // H + skin also sorts the sets that only get lists, and keeps the sorting: the movers' searches use it.
+  std::vector<CellSort> sorted(sets_);
+  std::vector<std::vector<Vec3>> sortedX(sets_);
   for (std::size_t b = 0; b < sets_; ++b) {
     bool searched = false;
-    for (std::size_t a = 0; a < sets_; ++a) searched = searched || wanted[a][b];
-    if (!searched) continue;
-    const auto& xs = *positions[b];
-    const std::size_t n = xs.size();
-    std::vector<std::int64_t> cell(n);
-    parallel::forEach(n, [&](std::size_t i) {
-      const CellIndex c = cellOf(xs[i]);
-      cell[i] = c.ix + nx * (c.iy + ny * c.iz);
-    });
-    SortedSet& s = sorted[b];
-    s.cellStart.assign(static_cast<std::size_t>(nCells) + 1, 0);
-    for (std::size_t i = 0; i < n; ++i) ++s.cellStart[static_cast<std::size_t>(cell[i]) + 1];
-    for (std::int64_t c = 0; c < nCells; ++c) s.cellStart[c + 1] += s.cellStart[c];
-    std::vector<std::int64_t> fill(s.cellStart.begin(), s.cellStart.end() - 1);
-    s.index.resize(n);
-    s.x.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::int64_t k = fill[static_cast<std::size_t>(cell[i])]++;
-      s.index[static_cast<std::size_t>(k)] = static_cast<Index>(i);
-      s.x[static_cast<std::size_t>(k)] = xs[i];
-    }
+    for (std::size_t a = 0; a < sets_; ++a) searched = searched || wanted[a][b] || (ascending && wanted[b][a]);
+    if (searched) sortIntoCells(*positions[b], grid, sorted[b], &sortedX[b]);
   }
 
   for (std::size_t a = 0; a < sets_; ++a) {
     const auto& xa = *positions[a];
     for (std::size_t b = 0; b < sets_; ++b) {
       if (!wanted[a][b]) continue;
-      const SortedSet& s = sorted[b];
+      const CellSort& s = sorted[b];
+      const std::vector<Vec3>& sx = sortedX[b];
       const bool self = a == b;
       const std::size_t withList = listedOf(a, xa.size());
       assemble(xa.size(), lists[a * sets_ + b], [&](std::size_t i, std::vector<Index>& out) {
@@ -253,12 +382,16 @@ void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positio
             for (std::int64_t k = s.cellStart[c0]; k < s.cellStart[c1 + 1]; ++k) {
               const Index j = s.index[static_cast<std::size_t>(k)];
               if (self && static_cast<std::size_t>(j) == i) continue;
-              if ((p - s.x[static_cast<std::size_t>(k)]).squaredNorm() < radius2) out.push_back(j);
+              if ((p - sx[static_cast<std::size_t>(k)]).squaredNorm() < radius2) out.push_back(j);
             }
           }
         if (ascending) sortAscending(out.data() + before, out.data() + out.size());
       });
     }
+  }
+  if (ascending) {
+    builtGrid_ = grid;
+    builtCells_ = std::move(sorted);
   }
 }
 

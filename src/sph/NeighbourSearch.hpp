@@ -1,9 +1,11 @@
 #pragma once
 /// Uniform cell-grid neighbour search over several particle sets (METHOD.md §6.1): 27-cell stencil, strict
 /// ||x_ab|| < H, one compressed (CSR) list per requested ordered pair of sets.
-/// With a skin s > 0 (Verlet lists), the grid search runs at H + s and is kept as candidates until some
-/// particle has moved s / 2 since; in between, each update only keeps the candidates within H. A flow that
-/// would cross the skin within two updates is searched at H every update instead.
+/// With a skin s > 0 (Verlet lists), the grid search runs at H + s and is kept as candidates; each update keeps
+/// the candidates within H. Particles that have moved s / 2 or more since the grid search ("movers": a jet, a
+/// splash) are searched afresh at every update, and added to the lists of the others, until they are more than
+/// a small share of all; then the grid search runs again. A flow that would cross the skin within two updates
+/// is searched at H every update instead.
 /// Neighbours come in a fixed order, so sums are reproducible: stencil cell, then index, for a search at H;
 /// ascending index with the skin, where candidates searched earlier must give the same lists as a search now.
 /// Either way a list is a function of the positions and of the largest step, so a run restarted at any step
@@ -72,14 +74,32 @@ private:
   struct CellGrid {
     Vec3 origin = Vec3::Zero();
     std::int64_t dims[3] = {0, 0, 0};
+    double cellSize = 1.0;
   };
   CellGrid makeGrid(const std::vector<const std::vector<Vec3>*>& positions, double radius) const;
+  /// One set's particles sorted by cell of a grid: cell c holds index[cellStart[c] .. cellStart[c + 1]).
+  struct CellSort {
+    std::vector<std::int64_t> cellStart;
+    std::vector<Index> index;
+  };
   /// The grid search at `radius` into `lists`; each particle's neighbours in ascending index order or in
   /// stencil order.
   void build(const std::vector<const std::vector<Vec3>*>& positions, const std::vector<std::vector<bool>>& wanted,
              double radius, std::vector<NeighbourList>& lists, bool ascending);
-  bool mustRebuild(const std::vector<const std::vector<Vec3>*>& positions,
-                   const std::vector<std::vector<bool>>& wanted) const;
+  /// Whether the candidates cannot serve these sets and lists at all (first update, other lists or sizes).
+  bool candidatesStale(const std::vector<const std::vector<Vec3>*>& positions,
+                       const std::vector<std::vector<bool>>& wanted) const;
+  /// Flags and lists the movers of every set; returns how many there are.
+  std::size_t findMovers(const std::vector<const std::vector<Vec3>*>& positions);
+  /// The list a->b at H from the candidates, the movers searched afresh.
+  void filterCandidates(const std::vector<const std::vector<Vec3>*>& positions, std::size_t a, std::size_t b);
+  /// Appends to `out` the particles of set b within H of p that are not movers, searched in b's cells of the last
+  /// grid search, and (withMovers) b's movers; `self` (skipped) is p's index when p is of set b, else -1.
+  void searchAround(const std::vector<const std::vector<Vec3>*>& positions, std::size_t b, const Vec3& p,
+                    std::int64_t self, bool withMovers, std::vector<Index>& out) const;
+  /// Sorts positions xs (all inside `grid`) by cell; `inOrder` (if given) gets them in that order.
+  static void sortIntoCells(const std::vector<Vec3>& xs, const CellGrid& grid, CellSort& cells,
+                            std::vector<Vec3>* inOrder);
   /// Particles of set a that get lists in this update.
   std::size_t listedOf(std::size_t a, std::size_t size) const {
     return a < listed_.size() ? std::min(listed_[a], size) : size;
@@ -99,6 +119,14 @@ private:
   std::vector<std::vector<bool>> builtWanted_; ///< the lists requested then
   std::vector<std::size_t> listed_;            ///< this update's `listed`
   std::vector<std::size_t> builtListed_;       ///< the candidates' `listed`
+  CellGrid builtGrid_;                         ///< the grid of the last grid search at H + skin
+  std::vector<CellSort> builtCells_;           ///< every searched set sorted into it, by the positions then
+  std::vector<std::vector<std::uint8_t>> isMover_; ///< per set, 1 for a mover (empty while the set has none)
+  std::vector<std::vector<Index>> movers_;     ///< per set, its movers in ascending order
+  CellGrid moverGrid_;                         ///< a grid of cells H over the movers' positions now
+  std::vector<CellSort> moverCells_;           ///< per set, its movers (by rank in movers_) sorted into it
+  std::vector<std::uint32_t> extraStart_;      ///< scratch of filterCandidates: where particle i's extras start
+  std::vector<Index> extras_;                  ///< scratch of filterCandidates: movers near each particle
   bool valid_ = false;
   std::size_t updates_ = 0;
   std::size_t gridSearches_ = 0;

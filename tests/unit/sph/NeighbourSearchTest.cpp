@@ -467,6 +467,70 @@ TEST(NeighbourSearch, SkinSearchOfAFastFlowSearchesAtHEveryUpdate) {
   EXPECT_EQ(search.gridSearches(), search.updates());
 }
 
+// A few particles that outrun the skin (a jet, a splash: "movers") are searched afresh at every update and
+// added to the lists of the particles they come near; the others keep their candidates. The lists stay exact
+// and ascending, the same as a fresh search's, while the movers leave the grid of the last grid search on
+// every side, and only a crowd of movers makes the search run the grid again.
+TEST(NeighbourSearch, AFewMoversDoNotForceGridSearches) {
+  ThreadGuard guard;
+  parallel::setThreads(2);
+  const double h = 0.04;
+  const double skin = 0.1 * h;
+  Positions fluid = randomPoints(3000, Vec3::Zero(), Vec3(0.25, 0.25, 0.25), 21);
+  Positions soil = randomPoints(1500, Vec3(0.0, -0.05, 0.0), Vec3(0.25, 0.05, 0.25), 22);
+  const Positions wall = randomPoints(800, Vec3(-0.05, -0.1, -0.05), Vec3(0.3, -0.05, 0.3), 23);
+  const std::vector<const Positions*> sets{&fluid, &soil, &wall};
+  const std::vector<std::vector<bool>> wanted{{true, true, true}, {true, true, true}, {false, false, false}};
+  const std::vector<std::size_t> listed{2800, 1500, 800}; // the last 200 fluid particles are ghosts
+  std::mt19937_64 rng(24);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  // 24 fluid movers (some of them ghosts) and 6 soil movers, 0.6 H an update, out of the box on every side.
+  std::vector<std::pair<std::size_t, Index>> movers;
+  for (Index i = 0; i < 24; ++i) movers.emplace_back(0, static_cast<Index>(137 * i + 11) % 3000);
+  for (Index i = 0; i < 6; ++i) movers.emplace_back(1, static_cast<Index>(211 * i + 5));
+  std::vector<Vec3> heading;
+  for (std::size_t k = 0; k < movers.size(); ++k) {
+    Vec3 d = Vec3::Zero();
+    d[k % 3] = k % 2 == 0 ? 1.0 : -1.0;
+    heading.push_back(0.6 * h * d);
+  }
+  auto expectExact = [&](const NeighbourSearch& search, const std::string& what) {
+    NeighbourSearch fresh(h, skin);
+    fresh.update(sets, wanted, 0.0, listed);
+    for (std::size_t a = 0; a < 2; ++a)
+      for (std::size_t b = 0; b < 3; ++b) {
+        const Lists got = toLists(search.list(a, b));
+        EXPECT_TRUE(got == toLists(fresh.list(a, b))) << what << ", " << a << "->" << b << " differs from a fresh search";
+        const Lists all = bruteForce(*sets[a], *sets[b], h, a == b);
+        ASSERT_EQ(got.size(), all.size());
+        std::size_t wrong = 0;
+        for (std::size_t i = 0; i < got.size(); ++i)
+          wrong += got[i] != (i < listed[a] ? all[i] : std::vector<Index>{});
+        EXPECT_EQ(wrong, 0u) << what << ", " << a << "->" << b << ": lists not the ascending brute-force ones";
+      }
+  };
+  NeighbourSearch search(h, skin);
+  const int updates = 40;
+  for (int step = 0; step < updates; ++step) {
+    search.update(sets, wanted, 0.0, listed);
+    expectExact(search, "update " + std::to_string(step));
+    // Everyone drifts 0.01 skin an update (0.4 skin in all, below the half skin that makes a mover) ...
+    const Vec3 drift = 0.01 * skin * Vec3(0.6, -0.8, 0.0);
+    for (auto& p : fluid) p += drift;
+    for (auto& p : soil) p += drift;
+    // ... and the movers cross a cell of H + skin every two updates.
+    for (std::size_t k = 0; k < movers.size(); ++k)
+      (movers[k].first == 0 ? fluid : soil)[static_cast<std::size_t>(movers[k].second)] +=
+          heading[k] + 0.1 * h * Vec3(u(rng), u(rng), u(rng));
+  }
+  EXPECT_EQ(search.gridSearches(), 1u) << "30 movers among 4,300 listed particles forced grid searches";
+  // A crowd of movers (one particle in ten jumps half an H) makes the search run the grid again.
+  for (std::size_t i = 0; i < fluid.size(); i += 10) fluid[i] += 0.5 * h * Vec3(u(rng), u(rng), u(rng)).normalized();
+  search.update(sets, wanted, 0.0, listed);
+  expectExact(search, "after the crowd moved");
+  EXPECT_EQ(search.gridSearches(), 2u);
+}
+
 // A parallel run's ghosts (the last particles of a set) get empty lists but are found as neighbours of the others;
 // the others' lists are those of a search of everything, in the same order, with and without the skin.
 TEST(NeighbourSearch, ParticlesBeyondListedAreNeighboursWithoutListsOfTheirOwn) {
