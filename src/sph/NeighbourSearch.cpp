@@ -237,8 +237,8 @@ void NeighbourSearch::filterCandidates(const std::vector<const std::vector<Vec3>
   });
 }
 
-void NeighbourSearch::searchAround(const std::vector<const std::vector<Vec3>*>& positions, std::size_t b,
-                                   const Vec3& p, std::int64_t self, bool withMovers, std::vector<Index>& out) const {
+void NeighbourSearch::searchAround(const std::vector<const std::vector<Vec3>*>& positions, std::size_t b, const Vec3& p,
+                                   std::int64_t self, bool withMovers, std::vector<Index>& out) const {
   const auto& xb = *positions[b];
   const double h2 = h_ * h_;
   const std::uint8_t* const moves = isMover_[b].empty() ? nullptr : isMover_[b].data();

@@ -122,11 +122,11 @@ private:
   CellGrid builtGrid_;                         ///< the grid of the last grid search at H + skin
   std::vector<CellSort> builtCells_;           ///< every searched set sorted into it, by the positions then
   std::vector<std::vector<std::uint8_t>> isMover_; ///< per set, 1 for a mover (empty while the set has none)
-  std::vector<std::vector<Index>> movers_;     ///< per set, its movers in ascending order
-  CellGrid moverGrid_;                         ///< a grid of cells H over the movers' positions now
-  std::vector<CellSort> moverCells_;           ///< per set, its movers (by rank in movers_) sorted into it
-  std::vector<std::uint32_t> extraStart_;      ///< scratch of filterCandidates: where particle i's extras start
-  std::vector<Index> extras_;                  ///< scratch of filterCandidates: movers near each particle
+  std::vector<std::vector<Index>> movers_;         ///< per set, its movers in ascending order
+  CellGrid moverGrid_;                             ///< a grid of cells H over the movers' positions now
+  std::vector<CellSort> moverCells_;               ///< per set, its movers (by rank in movers_) sorted into it
+  std::vector<std::uint32_t> extraStart_;          ///< scratch of filterCandidates: where particle i's extras start
+  std::vector<Index> extras_;                      ///< scratch of filterCandidates: movers near each particle
   bool valid_ = false;
   std::size_t updates_ = 0;
   std::size_t gridSearches_ = 0;

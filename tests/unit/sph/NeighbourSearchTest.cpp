@@ -500,12 +500,12 @@ TEST(NeighbourSearch, AFewMoversDoNotForceGridSearches) {
     for (std::size_t a = 0; a < 2; ++a)
       for (std::size_t b = 0; b < 3; ++b) {
         const Lists got = toLists(search.list(a, b));
-        EXPECT_TRUE(got == toLists(fresh.list(a, b))) << what << ", " << a << "->" << b << " differs from a fresh search";
+        EXPECT_TRUE(got == toLists(fresh.list(a, b)))
+            << what << ", " << a << "->" << b << " differs from a fresh search";
         const Lists all = bruteForce(*sets[a], *sets[b], h, a == b);
         ASSERT_EQ(got.size(), all.size());
         std::size_t wrong = 0;
-        for (std::size_t i = 0; i < got.size(); ++i)
-          wrong += got[i] != (i < listed[a] ? all[i] : std::vector<Index>{});
+        for (std::size_t i = 0; i < got.size(); ++i) wrong += got[i] != (i < listed[a] ? all[i] : std::vector<Index>{});
         EXPECT_EQ(wrong, 0u) << what << ", " << a << "->" << b << ": lists not the ascending brute-force ones";
       }
   };
