@@ -430,10 +430,10 @@ void Solver::searchNeighbours(double deltaT) {
     for (std::size_t a : dynamicSets_) particles_[a].permute(search_.mortonOrder(particles_[a].x()));
     search_.invalidate();
   }
-  // How far the fastest particle (walls included) moves this step decides whether the Verlet skin pays. It is
-  // measured afresh rather than taken from the last step's report: a restarted run has no last step, and must
-  // choose as the uninterrupted one did.
-  const double largestStep = maxSpeed() * deltaT;
+  // How far the bulk of the particles moves this step decides whether the Verlet skin pays. It is measured afresh
+  // rather than taken from the last step's report: a restarted run has no last step, and must choose as the
+  // uninterrupted one did.
+  const double bulkStep = bulkSpeed(deltaT) * deltaT;
   if (ghosts_) {
     // Between migrations the ranks keep their own particles in their slots and take the same ghosts again, so the
     // skin's candidates stay valid; a fresh halo after a restart lists the same neighbours in the same order. The
@@ -458,7 +458,7 @@ void Solver::searchNeighbours(double deltaT) {
   std::vector<std::size_t> listed;
   if (ghosts_)
     for (std::size_t s = 0; s < particles_.size(); ++s) listed.push_back(ghosts_->owned(s));
-  search_.update(positions, wanted, largestStep, listed);
+  search_.update(positions, wanted, bulkStep, listed);
 }
 
 bool Solver::skinHoldsOnEveryRank() const {
@@ -579,6 +579,35 @@ double Solver::maxSpeed() const {
   for (std::size_t m = 0; m < wallMotions_.size(); ++m)
     result = std::max(result, wallMotions_[m].motion.maxSpeed(wallReach_[m], state_.time, state_.time + ahead));
   return result;
+}
+
+double Solver::bulkSpeed(double deltaT) const {
+  const double fastest = maxSpeed();
+  const double skin = settings_.searchSkin * particles_.supportRadius();
+  const double crossing = skin / (NeighbourSearch::stepsPerSkin * deltaT); // a speed that outruns the skin
+  if (skin <= 0.0 || fastest < crossing) return fastest;
+  // A few fast particles (a jet, a splash) are the search's movers: the speed that matters is that of the others,
+  // unless the fast ones are more than its share. Moving walls count with their fastest point, as in maxSpeed.
+  double fast = 0.0, listed = 0.0, others = 0.0;
+  for (std::size_t s = 0; s < particles_.size(); ++s) {
+    const auto& v = particles_[s].v();
+    const std::size_t n = ghosts_ ? ghosts_->owned(s) : v.size();
+    fast += parallel::sum<double>(n, [&](std::size_t i) { return v[i].norm() >= crossing ? 1.0 : 0.0; });
+    if (std::find(dynamicSets_.begin(), dynamicSets_.end(), s) != dynamicSets_.end()) listed += static_cast<double>(n);
+    others = std::max(others, parallel::max(n, 0.0, [&](std::size_t i) {
+                        const double speed = v[i].norm();
+                        return speed < crossing ? speed : 0.0;
+                      }));
+  }
+  if (ghosts_) {
+    fast = ghosts_->sum(fast);
+    listed = ghosts_->sum(listed);
+    others = ghosts_->max(others);
+  }
+  const double ahead = control_.adjustTimeStep ? control_.maxDeltaT : control_.deltaT;
+  for (std::size_t m = 0; m < wallMotions_.size(); ++m)
+    others = std::max(others, wallMotions_[m].motion.maxSpeed(wallReach_[m], state_.time, state_.time + ahead));
+  return fast * static_cast<double>(NeighbourSearch::particlesPerMover) > listed ? fastest : others;
 }
 
 double Solver::stepSizeFor(double deltaT) const {

@@ -100,6 +100,9 @@ private:
   /// Parallel runs: the own particles' searchOrigin, at a migration.
   void markSearchOrigins();
   double maxSpeed() const;
+  /// The largest speed but that of a few fast particles (at most one of NeighbourSearch::particlesPerMover
+  /// listed particles) that would outrun the search's skin in a step of deltaT: those are its movers.
+  double bulkSpeed(double deltaT) const;
   void measureFluidDensity();
   void logProgress(double elapsed, double startTime) const;
   /// Without the pore-fluid correction, warns of porous materials whose pores fluid fills 10 % short or more

@@ -24,11 +24,6 @@ constexpr std::size_t kChunk = 512;
 /// 0.8999999999999999 at H = 0.1 land in cells 7 and 9), and the 27-cell stencil misses the pair. The
 /// margin exceeds the relative round-off (a few 1e-16) times the largest cell index (kMaxCells).
 constexpr double kCellWidening = 1.0 + 1e-6;
-/// The skin is used when the candidates will last two updates at least: 2 x 2 x largestStep < skin.
-constexpr double kStepsPerSkin = 4.0;
-/// The grid search runs again once more than one listed particle in this many is a mover: each mover costs
-/// a search of its own at every update, and a few times that in the others' lists.
-constexpr std::size_t kParticlesPerMover = 32;
 
 /// Insertion sort: a list gathered cell by cell from Morton-ordered particles is nearly ascending already.
 void sortAscending(Index* first, Index* last) {
@@ -121,12 +116,12 @@ void NeighbourSearch::assemble(std::size_t n, NeighbourList& list, const AppendN
 }
 
 void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positions,
-                             const std::vector<std::vector<bool>>& wanted, double largestStep,
+                             const std::vector<std::vector<bool>>& wanted, double bulkStep,
                              const std::vector<std::size_t>& listed) {
   sets_ = positions.size();
   listed_ = listed;
   ++updates_;
-  if (!skinPays(largestStep)) {
+  if (!skinPays(bulkStep)) {
     // A fast flow would cross the skin every step or two, and the grid search at H + skin would cost more
     // than it saves: search at H, in stencil order (the mode is a function of the state, so a restarted run
     // picks the same one).
@@ -138,7 +133,7 @@ void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positi
   for (std::size_t a = 0; a < sets_; ++a)
     if (std::find(wanted[a].begin(), wanted[a].end(), true) != wanted[a].end())
       listedParticles += listedOf(a, positions[a]->size());
-  if (candidatesStale(positions, wanted) || findMovers(positions) * kParticlesPerMover > listedParticles) {
+  if (candidatesStale(positions, wanted) || findMovers(positions) * particlesPerMover > listedParticles) {
     build(positions, wanted, h_ + skin_, candidates_, true);
     builtAt_.resize(sets_);
     for (std::size_t s = 0; s < sets_; ++s) builtAt_[s] = *positions[s];
@@ -267,7 +262,7 @@ void NeighbourSearch::searchAround(const std::vector<const std::vector<Vec3>*>& 
   if (withMovers) visit(moverGrid_, moverCells_[b], [&](Index k) { return movers_[b][static_cast<std::size_t>(k)]; });
 }
 
-bool NeighbourSearch::skinPays(double largestStep) const { return skin_ > 0.0 && kStepsPerSkin * largestStep < skin_; }
+bool NeighbourSearch::skinPays(double bulkStep) const { return skin_ > 0.0 && stepsPerSkin * bulkStep < skin_; }
 
 bool NeighbourSearch::candidatesStale(const std::vector<const std::vector<Vec3>*>& positions,
                                       const std::vector<std::vector<bool>>& wanted) const {

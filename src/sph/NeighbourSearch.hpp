@@ -47,12 +47,13 @@ public:
   explicit NeighbourSearch(double supportRadius, double skin = 0.0) : h_(supportRadius), skin_(skin) {}
 
   /// Positions of every set, by set number. `wanted[a][b]` says whether the list a->b is needed.
-  /// Lists of a set with itself exclude the particle itself. `largestStep` bounds how far any particle moves
-  /// before the next update [m] (largest speed times the step): the skin is used when it is below skin / 4.
+  /// Lists of a set with itself exclude the particle itself. `bulkStep` bounds how far particles move before the
+  /// next update [m] (speed times the step), all but at most one listed particle in `particlesPerMover` (a jet,
+  /// which the skin handles as movers): the skin is used when it is below skin / 4.
   /// `listed[a]` (when given) is how many of set a's first particles get lists; the others have empty ones but are
   /// found as neighbours (a parallel run's ghosts, whose owners compute them).
   void update(const std::vector<const std::vector<Vec3>*>& positions, const std::vector<std::vector<bool>>& wanted,
-              double largestStep = 0.0, const std::vector<std::size_t>& listed = {});
+              double bulkStep = 0.0, const std::vector<std::size_t>& listed = {});
 
   /// The list of set a against set b (empty if it was not requested).
   const NeighbourList& list(std::size_t a, std::size_t b) const { return lists_[a * sets_ + b]; }
@@ -61,6 +62,11 @@ public:
   std::vector<Index> mortonOrder(const std::vector<Vec3>& x) const;
 
   double supportRadius() const { return h_; }
+  /// The grid search runs again once more than one listed particle in this many is a mover: each mover costs
+  /// a search of its own at every update, and a few times that in the others' lists.
+  static constexpr std::size_t particlesPerMover = 32;
+  /// The skin is used when the candidates will last two updates at least: 2 x 2 x bulkStep < skin.
+  static constexpr double stepsPerSkin = 4.0;
 
   /// The next update runs the grid search, whatever the particles' displacements (after a reordering).
   void invalidate() { valid_ = false; }
@@ -69,8 +75,8 @@ public:
   std::size_t gridSearches() const { return gridSearches_; }
 
 private:
-  /// Whether update() uses the skin for a step of `largestStep` (else it searches at H in stencil order).
-  bool skinPays(double largestStep) const;
+  /// Whether update() uses the skin for a step of `bulkStep` (else it searches at H in stencil order).
+  bool skinPays(double bulkStep) const;
   struct CellGrid {
     Vec3 origin = Vec3::Zero();
     std::int64_t dims[3] = {0, 0, 0};
