@@ -78,6 +78,7 @@ public:
   StepContext beginStep(double deltaT);
   ImplicitSolver& implicitSolver() { return implicit_; }
   const PressureSolver& pressureSolver() const { return pressure_; }
+  const NeighbourSearch& neighbourSearch() const { return search_; }
 
   const ParticleSystem& particles() const { return particles_; }
   ParticleSystem& particles() { return particles_; }
