@@ -176,27 +176,35 @@ void NeighbourSearch::filterCandidates(const std::vector<const std::vector<Vec3>
   const std::uint8_t* const aMoves = isMover_[a].empty() ? nullptr : isMover_[a].data();
   const std::uint8_t* const bMoves = isMover_[b].empty() ? nullptr : isMover_[b].data();
 
-  // Particles of a that b's movers came near, as (particle, mover) pairs grouped by particle, movers ascending.
+  // Particles of a that b's movers came near, as (particle, mover) pairs grouped by particle, movers ascending:
+  // particle i's are extras[extraStart[i] .. extraStart[i + 1]).
   std::vector<std::uint32_t>& extraStart = extraStart_;
   std::vector<Index>& extras = extras_;
   extras.clear();
   if (bMoves) {
-    std::vector<std::pair<Index, Index>> pairs;
-    std::vector<Index> near;
-    for (const Index f : movers_[b]) {
-      near.clear();
-      const std::int64_t self = a == b ? static_cast<std::int64_t>(f) : -1;
-      searchAround(positions, a, xb[static_cast<std::size_t>(f)], self, false, near);
-      for (const Index i : near)
-        if (static_cast<std::size_t>(i) < withList && !(aMoves && aMoves[i])) pairs.emplace_back(i, f);
-    }
-    memory::resizeForRefill(extraStart, xa.size() + 1);
+    const std::vector<Index>& movers = movers_[b];
+    const std::size_t chunks = (movers.size() + kChunk - 1) / kChunk;
+    std::vector<std::vector<std::pair<Index, Index>>> chunkPairs(chunks);
+    parallel::forEachTask(chunks, [&](std::size_t chunk) {
+      std::vector<Index> near;
+      for (std::size_t k = chunk * kChunk; k < std::min(movers.size(), (chunk + 1) * kChunk); ++k) {
+        const Index f = movers[k];
+        near.clear();
+        searchAround(positions, a, xb[static_cast<std::size_t>(f)], a == b ? static_cast<std::int64_t>(f) : -1, false,
+                     near);
+        for (const Index i : near)
+          if (static_cast<std::size_t>(i) < withList && !(aMoves && aMoves[i])) chunkPairs[chunk].emplace_back(i, f);
+      }
+    });
+    // Counting sort by particle, stable, so each particle's movers stay ascending.
+    memory::resizeForRefill(extraStart, xa.size() + 2);
     std::fill(extraStart.begin(), extraStart.end(), 0u);
-    for (const auto& pair : pairs) ++extraStart[static_cast<std::size_t>(pair.first) + 1];
-    for (std::size_t i = 0; i < xa.size(); ++i) extraStart[i + 1] += extraStart[i];
-    extras.resize(pairs.size());
-    std::vector<std::uint32_t> fill(extraStart.begin(), extraStart.end() - 1);
-    for (const auto& pair : pairs) extras[fill[static_cast<std::size_t>(pair.first)]++] = pair.second;
+    for (const auto& pairs : chunkPairs)
+      for (const auto& pair : pairs) ++extraStart[static_cast<std::size_t>(pair.first) + 2];
+    for (std::size_t i = 2; i < extraStart.size(); ++i) extraStart[i] += extraStart[i - 1];
+    extras.resize(extraStart.back());
+    for (const auto& pairs : chunkPairs)
+      for (const auto& pair : pairs) extras[extraStart[static_cast<std::size_t>(pair.first) + 1]++] = pair.second;
   }
 
   assemble(xa.size(), lists_[a * sets_ + b], [&](std::size_t i, std::vector<Index>& out) {
@@ -282,7 +290,8 @@ std::size_t NeighbourSearch::findMovers(const std::vector<const std::vector<Vec3
     std::vector<std::uint8_t>& moves = isMover_[s];
     movers_[s].clear();
     // Two particles that each moved less than skin / 2 since the grid search are still candidates if within H.
-    auto moved = [&](std::size_t i) { return 2.0 * (x[i] - x0[i]).norm() >= skin_; };
+    // A position that is not finite moves too: the search around it then stops the run, as a grid search would.
+    auto moved = [&](std::size_t i) { return !(2.0 * (x[i] - x0[i]).norm() < skin_); };
     const std::size_t count = parallel::sum<std::size_t>(x.size(), [&](std::size_t i) { return moved(i) ? 1 : 0; });
     if (count == 0) {
       moves.clear();
@@ -350,9 +359,9 @@ void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positio
   std::vector<CellSort> sorted(sets_);
   std::vector<std::vector<Vec3>> sortedX(sets_);
   for (std::size_t b = 0; b < sets_; ++b) {
-    bool searched = false;
-    for (std::size_t a = 0; a < sets_; ++a) searched = searched || wanted[a][b] || (ascending && wanted[b][a]);
-    if (searched) sortIntoCells(*positions[b], grid, sorted[b], &sortedX[b]);
+    bool needed = false;
+    for (std::size_t a = 0; a < sets_; ++a) needed = needed || wanted[a][b] || (ascending && wanted[b][a]);
+    if (needed) sortIntoCells(*positions[b], grid, sorted[b], &sortedX[b]);
   }
 
   for (std::size_t a = 0; a < sets_; ++a) {

@@ -224,6 +224,18 @@ TEST(NeighbourSearch, NonFinitePositionThrows) {
   }
 }
 
+// With the skin, a position that turns non-finite after the grid search stops the run as the grid search does,
+// instead of dropping out of every list.
+TEST(NeighbourSearch, NonFinitePositionThrowsWithTheSkinToo) {
+  for (double v : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    NeighbourSearch search(0.04, 0.004);
+    Positions x = randomPoints(500, Vec3::Zero(), Vec3(0.2, 0.2, 0.2), 6);
+    search.update({&x}, {{true}});
+    x[17].y() = v;
+    EXPECT_THROW(search.update({&x}, {{true}}), NumericalError);
+  }
+}
+
 /// Cell of p in a grid of cell size h anchored at lo (independent of the search's internals).
 std::array<long long, 3> cellOf(const Vec3& p, const Vec3& lo, double h) {
   return {static_cast<long long>(std::floor((p.x() - lo.x()) / h)),
