@@ -39,9 +39,11 @@ struct CellIndex {
   std::int64_t ix, iy, iz;
 };
 
-/// Cell coordinate of x along one axis, floor-based: below 0 or beyond the grid when x is outside it.
-std::int64_t cellCoordinate(double x, double origin, double invCell) {
-  return static_cast<std::int64_t>(std::floor((x - origin) * invCell));
+/// Cell coordinate of x along one axis of `cells` cells, floor-based: -2 or cells + 1 when x is farther outside
+/// (clamped before the conversion, which a particle far away would overflow).
+std::int64_t cellCoordinate(double x, double origin, double invCell, std::int64_t cells) {
+  return static_cast<std::int64_t>(
+      std::clamp(std::floor((x - origin) * invCell), -2.0, static_cast<double>(cells) + 1.0));
 }
 
 } // namespace
@@ -133,6 +135,7 @@ void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positi
   for (std::size_t a = 0; a < sets_; ++a)
     if (std::find(wanted[a].begin(), wanted[a].end(), true) != wanted[a].end())
       listedParticles += listedOf(a, positions[a]->size());
+  // Movers of every set count (ghosts, walls), against the particles that get lists: on the safe side.
   if (candidatesStale(positions, wanted) || findMovers(positions) * particlesPerMover > listedParticles) {
     build(positions, wanted, h_ + skin_, candidates_, true);
     builtAt_.resize(sets_);
@@ -154,9 +157,15 @@ void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positi
     for (const Index j : movers_[s]) moverX[s].push_back((*positions[s])[static_cast<std::size_t>(j)]);
     moverPositions.push_back(&moverX[s]);
   }
-  moverGrid_ = makeGrid(moverPositions, h_);
+  // Cells as wide as the grid search's, so that this grid is never refused where a grid search would not be.
+  moverGrid_ = makeGrid(moverPositions, h_ + skin_);
   moverCells_.resize(sets_);
-  for (std::size_t s = 0; s < sets_; ++s) sortIntoCells(moverX[s], moverGrid_, moverCells_[s], nullptr);
+  for (std::size_t s = 0; s < sets_; ++s) {
+    if (movers_[s].empty())
+      moverCells_[s].cellStart.clear(); // nothing to visit
+    else
+      sortIntoCells(moverX[s], moverGrid_, moverCells_[s], nullptr);
+  }
 
   // The lists at H: the neighbours within H now, ascending like the candidates, so they do not depend on when
   // the candidates were searched.
@@ -249,7 +258,7 @@ void NeighbourSearch::searchAround(const std::vector<const std::vector<Vec3>*>& 
     if (cells.cellStart.empty()) return;
     std::int64_t lo[3], hi[3];
     for (int d = 0; d < 3; ++d) {
-      const std::int64_t c = cellCoordinate(p[d], grid.origin[d], 1.0 / grid.cellSize);
+      const std::int64_t c = cellCoordinate(p[d], grid.origin[d], 1.0 / grid.cellSize, grid.dims[d]);
       lo[d] = std::max<std::int64_t>(c - 1, 0);
       hi[d] = std::min(c + 1, grid.dims[d] - 1);
       if (lo[d] > hi[d]) return; // p is more than a cell outside the grid

@@ -62,8 +62,9 @@ public:
   std::vector<Index> mortonOrder(const std::vector<Vec3>& x) const;
 
   double supportRadius() const { return h_; }
-  /// The grid search runs again once more than one listed particle in this many is a mover: each mover costs
-  /// a search of its own at every update, and a few times that in the others' lists.
+  /// The grid search runs again once the movers (of all sets, ghosts and walls included) are more than one in this
+  /// many of the particles that get lists: each mover costs a search of its own at every update, and a few times
+  /// that in the others' lists.
   static constexpr std::size_t particlesPerMover = 32;
   /// The skin is used when the candidates will last two updates at least: 2 x 2 x bulkStep < skin.
   static constexpr double stepsPerSkin = 4.0;
@@ -129,7 +130,7 @@ private:
   std::vector<CellSort> builtCells_;           ///< every searched set sorted into it, by the positions then
   std::vector<std::vector<std::uint8_t>> isMover_; ///< per set, 1 for a mover (empty while the set has none)
   std::vector<std::vector<Index>> movers_;         ///< per set, its movers in ascending order
-  CellGrid moverGrid_;                             ///< a grid of cells H over the movers' positions now
+  CellGrid moverGrid_;                             ///< a grid of cells H + skin over the movers' positions now
   std::vector<CellSort> moverCells_;               ///< per set, its movers (by rank in movers_) sorted into it
   std::vector<std::uint32_t> extraStart_;          ///< scratch of filterCandidates: where particle i's extras start
   std::vector<Index> extras_;                      ///< scratch of filterCandidates: movers near each particle

@@ -490,27 +490,38 @@ TEST(NeighbourSearch, AFewMoversDoNotForceGridSearches) {
   const double skin = 0.1 * h;
   Positions fluid = randomPoints(3000, Vec3::Zero(), Vec3(0.25, 0.25, 0.25), 21);
   Positions soil = randomPoints(1500, Vec3(0.0, -0.05, 0.0), Vec3(0.25, 0.05, 0.25), 22);
-  const Positions wall = randomPoints(800, Vec3(-0.05, -0.1, -0.05), Vec3(0.3, -0.05, 0.3), 23);
-  const std::vector<const Positions*> sets{&fluid, &soil, &wall};
-  const std::vector<std::vector<bool>> wanted{{true, true, true}, {true, true, true}, {false, false, false}};
-  const std::vector<std::size_t> listed{2800, 1500, 800}; // the last 200 fluid particles are ghosts
+  Positions wall = randomPoints(800, Vec3(-0.05, -0.1, -0.05), Vec3(0.3, -0.05, 0.3), 23);
+  const Positions none;
+  // The wall is searched but gets no lists (a moving wall body), `none` is an empty set searched from the fluid.
+  const std::vector<const Positions*> sets{&fluid, &soil, &wall, &none};
+  const std::vector<std::vector<bool>> wanted{
+      {true, true, true, true}, {true, true, true, false}, {false, false, false, false}, {false, false, false, false}};
+  const std::vector<std::size_t> listed{2800, 1500, 800, 0}; // the last 200 fluid particles are ghosts
   std::mt19937_64 rng(24);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  // 24 fluid movers (some of them ghosts) and 6 soil movers, 0.6 H an update, out of the box on every side.
-  std::vector<std::pair<std::size_t, Index>> movers;
-  for (Index i = 0; i < 24; ++i) movers.emplace_back(0, static_cast<Index>(137 * i + 11) % 3000);
-  for (Index i = 0; i < 6; ++i) movers.emplace_back(1, static_cast<Index>(211 * i + 5));
+  // 24 fluid movers (some of them ghosts), 6 soil and 4 wall movers, 0.6 H an update, out of the box on every side.
+  std::vector<std::pair<std::size_t, std::size_t>> movers;
+  for (std::size_t i = 0; i < 24; ++i) movers.emplace_back(0, (137 * i + 11) % 3000);
+  for (std::size_t i = 0; i < 6; ++i) movers.emplace_back(1, 211 * i + 5);
+  for (std::size_t i = 0; i < 4; ++i) movers.emplace_back(2, 97 * i + 3);
   std::vector<Vec3> heading;
   for (std::size_t k = 0; k < movers.size(); ++k) {
     Vec3 d = Vec3::Zero();
     d[k % 3] = k % 2 == 0 ? 1.0 : -1.0;
     heading.push_back(0.6 * h * d);
   }
+  // Two fluid movers and a soil mover that travel together within H of each other: pairs of movers.
+  const std::array<std::pair<std::size_t, std::size_t>, 3> group{{{0, 1000}, {0, 1001}, {1, 700}}};
+  const Vec3 groupStart = fluid[1000];
+  fluid[1001] = groupStart + Vec3(0.3 * h, 0.0, 0.0);
+  soil[700] = groupStart + Vec3(0.0, 0.3 * h, 0.0);
+  auto at = [&](std::size_t set, std::size_t i) -> Vec3& { return set == 0 ? fluid[i] : set == 1 ? soil[i] : wall[i]; };
   auto expectExact = [&](const NeighbourSearch& search, const std::string& what) {
     NeighbourSearch fresh(h, skin);
     fresh.update(sets, wanted, 0.0, listed);
     for (std::size_t a = 0; a < 2; ++a)
-      for (std::size_t b = 0; b < 3; ++b) {
+      for (std::size_t b = 0; b < 4; ++b) {
+        if (!wanted[a][b]) continue;
         const Lists got = toLists(search.list(a, b));
         EXPECT_TRUE(got == toLists(fresh.list(a, b)))
             << what << ", " << a << "->" << b << " differs from a fresh search";
@@ -520,6 +531,10 @@ TEST(NeighbourSearch, AFewMoversDoNotForceGridSearches) {
         for (std::size_t i = 0; i < got.size(); ++i) wrong += got[i] != (i < listed[a] ? all[i] : std::vector<Index>{});
         EXPECT_EQ(wrong, 0u) << what << ", " << a << "->" << b << ": lists not the ascending brute-force ones";
       }
+    const auto& together = search.list(0, 0).of(1000);
+    EXPECT_TRUE(std::find(together.begin(), together.end(), Index(1001)) != together.end()) << what;
+    const auto& across = search.list(1, 0).of(700);
+    EXPECT_TRUE(std::find(across.begin(), across.end(), Index(1000)) != across.end()) << what;
   };
   NeighbourSearch search(h, skin);
   const int updates = 40;
@@ -532,10 +547,12 @@ TEST(NeighbourSearch, AFewMoversDoNotForceGridSearches) {
     for (auto& p : soil) p += drift;
     // ... and the movers cross a cell of H + skin every two updates.
     for (std::size_t k = 0; k < movers.size(); ++k)
-      (movers[k].first == 0 ? fluid : soil)[static_cast<std::size_t>(movers[k].second)] +=
-          heading[k] + 0.1 * h * Vec3(u(rng), u(rng), u(rng));
+      at(movers[k].first, movers[k].second) += heading[k] + 0.1 * h * Vec3(u(rng), u(rng), u(rng));
+    for (const auto& [set, i] : group) at(set, i) += Vec3(0.0, 0.02, 0.01);
+    // One particle jumps away and comes back: a mover for one update, then one no more.
+    fluid[2000] += (step == 5 ? 1.0 : step == 6 ? -1.0 : 0.0) * Vec3(0.7 * h, 0.0, 0.0);
   }
-  EXPECT_EQ(search.gridSearches(), 1u) << "30 movers among 4,300 listed particles forced grid searches";
+  EXPECT_EQ(search.gridSearches(), 1u) << "37 movers among 4,300 listed particles forced grid searches";
   // A crowd of movers (one particle in ten jumps half an H) makes the search run the grid again.
   for (std::size_t i = 0; i < fluid.size(); i += 10) fluid[i] += 0.5 * h * Vec3(u(rng), u(rng), u(rng)).normalized();
   search.update(sets, wanted, 0.0, listed);
