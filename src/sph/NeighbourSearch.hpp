@@ -8,8 +8,8 @@
 /// is searched at H every update instead.
 /// Neighbours come in a fixed order, so sums are reproducible: stencil cell, then index, for a search at H;
 /// ascending index with the skin, where candidates searched earlier must give the same lists as a search now.
-/// Either way a list is a function of the positions and of the largest step, so a run restarted at any step
-/// continues bit for bit.
+/// Either way a list is a function of the positions and of the bulk step (update()), so a run restarted at any
+/// step continues bit for bit.
 
 #include "core/Types.hpp"
 
