@@ -150,7 +150,19 @@ void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positi
       movers_[s].clear();
     }
   }
-  // The movers by their positions now, for the searches around them and their own.
+  // Most steps have no movers: nothing to sort then.
+  if (std::any_of(movers_.begin(), movers_.end(), [](const std::vector<Index>& m) { return !m.empty(); }))
+    sortMovers(positions);
+
+  // The lists at H: the neighbours within H now, ascending like the candidates, so they do not depend on when
+  // the candidates were searched.
+  clearLists(lists_);
+  for (std::size_t a = 0; a < sets_; ++a)
+    for (std::size_t b = 0; b < sets_; ++b)
+      if (wanted[a][b]) filterCandidates(positions, a, b);
+}
+
+void NeighbourSearch::sortMovers(const std::vector<const std::vector<Vec3>*>& positions) {
   std::vector<std::vector<Vec3>> moverX(sets_);
   std::vector<const std::vector<Vec3>*> moverPositions;
   for (std::size_t s = 0; s < sets_; ++s) {
@@ -166,13 +178,6 @@ void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positi
     else
       sortIntoCells(moverX[s], moverGrid_, moverCells_[s], nullptr);
   }
-
-  // The lists at H: the neighbours within H now, ascending like the candidates, so they do not depend on when
-  // the candidates were searched.
-  clearLists(lists_);
-  for (std::size_t a = 0; a < sets_; ++a)
-    for (std::size_t b = 0; b < sets_; ++b)
-      if (wanted[a][b]) filterCandidates(positions, a, b);
 }
 
 void NeighbourSearch::filterCandidates(const std::vector<const std::vector<Vec3>*>& positions, std::size_t a,

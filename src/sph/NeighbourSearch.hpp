@@ -98,6 +98,8 @@ private:
                        const std::vector<std::vector<bool>>& wanted) const;
   /// Flags and lists the movers of every set; returns how many there are.
   std::size_t findMovers(const std::vector<const std::vector<Vec3>*>& positions);
+  /// Sorts the movers of every set, by their positions now, into moverGrid_ for the searches around them.
+  void sortMovers(const std::vector<const std::vector<Vec3>*>& positions);
   /// The list a->b at H from the candidates, the movers searched afresh.
   void filterCandidates(const std::vector<const std::vector<Vec3>*>& positions, std::size_t a, std::size_t b);
   /// Appends to `out` the particles of set b within H of p that are not movers, searched in b's cells of the last
