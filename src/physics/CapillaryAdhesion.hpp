@@ -33,7 +33,7 @@ private:
   /// One side of the fluid-solid coupling: the list from set `self` (block part `part`) to set `other`.
   struct Side {
     std::size_t self, part, other, otherPart;
-    std::vector<double> pairCoefficient; ///< c_ab per pair, in list order
+    std::vector<PairFactor> pairCoefficient; ///< c_ab per pair, in list order
   };
   const StepContext* ctx_ = nullptr;
   std::vector<Side> sides_;

@@ -22,7 +22,7 @@ const char* const kFluidVolume = "fluidVolume";
 struct Partner {
   const NeighbourList* list;
   const std::vector<Vec3>* x;
-  std::vector<double>* gradients;
+  std::vector<PairFactor>* gradients;
   SetCoupling coupling;
   bool counts; ///< f(a<-b) != 0 for some pair
   const std::int64_t* objectB;
@@ -36,7 +36,7 @@ struct Wall {
   const NeighbourList* list;
   const std::vector<Vec3>* x;
   const std::vector<double>* volume;
-  std::vector<double>* gradients;
+  std::vector<PairFactor>* gradients;
 };
 
 void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& gradients) {
@@ -102,8 +102,8 @@ void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& g
         const std::size_t j = static_cast<std::size_t>(jIndex);
         const Vec3 xij = xi - xb[j];
         const double dist = xij.norm();
-        const double s = kernel.gradFactor(dist);
-        (*p.gradients)[pair++] = s;
+        const double s = static_cast<PairFactor>(kernel.gradFactor(dist));
+        (*p.gradients)[pair++] = static_cast<PairFactor>(s);
         const double w = kernel.w(dist);
         if (p.fluidB && porous) fluidW += w;
         if (!p.counts) continue;
@@ -125,8 +125,8 @@ void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& g
         const std::size_t kk = static_cast<std::size_t>(k);
         const Vec3 xik = xi - (*wall.x)[kk];
         const double dist = xik.norm();
-        const double s = kernel.gradFactor(dist);
-        (*wall.gradients)[wp++] = s;
+        const double s = static_cast<PairFactor>(kernel.gradFactor(dist));
+        (*wall.gradients)[wp++] = static_cast<PairFactor>(s);
         const double vk = (*wall.volume)[kk];
         wallW += vk * kernel.w(dist);
         g += (vk * s) * xik;

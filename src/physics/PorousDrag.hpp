@@ -29,7 +29,7 @@ private:
   /// One side of the fluid-solid coupling: the list from set `self` (block part `part`) to set `other`.
   struct Side {
     std::size_t self, part, other, otherPart;
-    std::vector<double> pairCoefficient; ///< K s per pair (gradW = s x)
+    std::vector<PairFactor> pairCoefficient; ///< K s per pair (gradW = s x)
   };
   const StepContext* ctx_ = nullptr;
   std::vector<Side> sides_;

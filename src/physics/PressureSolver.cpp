@@ -32,7 +32,7 @@ double chebyshevWeight(int sweep, double rho, double previous) {
 struct PartnerView {
   const NeighbourList* list;
   const std::vector<Vec3>* x;
-  const std::vector<double>* factors;
+  const std::vector<PairFactor>* factors;
   const std::int64_t* objectB;
   SetCoupling coupling;
   const std::vector<Vec3>* v;
@@ -56,7 +56,7 @@ struct WallView {
   const std::vector<Vec3>* x;
   const std::vector<Vec3>* v;
   const std::vector<double>* volume;
-  const std::vector<double>* factors;
+  const std::vector<PairFactor>* factors;
 };
 
 std::vector<WallView> wallsOf(const StepContext& ctx, std::size_t a) {
