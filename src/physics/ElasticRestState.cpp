@@ -44,7 +44,7 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
   offsets_.assign(n + 1, 0);
   for (std::size_t s = 0; s < n; ++s) offsets_[s + 1] = offsets_[s] + static_cast<std::int64_t>(lists[s].size());
   neighbours_.resize(static_cast<std::size_t>(offsets_[n]));
-  weightedGradients_.resize(neighbours_.size());
+  gradients_.resize(neighbours_.size());
   volume_.resize(n);
   shepard_.resize(n);
   correction_.resize(n);
@@ -56,21 +56,23 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
     for (Index t : lists[s]) {
       const Vec3 xst = rest[s] - rest[static_cast<std::size_t>(t)];
       shepard += kernel.w(xst);
+      const Vec3 g = kernel.grad(xst);
       neighbours_[pair] = t;
-      weightedGradients_[pair++] = kernel.grad(xst);
+      gradients_[pair++] = {static_cast<float>(g.x()), static_cast<float>(g.y()), static_cast<float>(g.z())};
     }
     shepard_[s] = shepard;
     volume_[s] = 1.0 / shepard;
   });
-  // Every V0 is known now: weight the gradients by their neighbour's volume and sum the moments.
+  // Every V0 is known now: sum the moments of the weighted gradients as the terms will read them. (In a pass of its
+  // own: read back in the loop that stored it, GCC 12 at -O3 returned two of a gradient's three components unrounded.)
   parallel::forEach(n, [&](std::size_t s) {
     Mat3 moment = Mat3::Zero();
     Vec3 sum = Vec3::Zero();
     for (std::size_t pair = begin(s); pair < end(s); ++pair) {
       const std::size_t t = static_cast<std::size_t>(neighbours_[pair]);
-      weightedGradients_[pair] *= volume_[t];
-      moment += weightedGradients_[pair] * (rest[t] - rest[s]).transpose();
-      sum += weightedGradients_[pair];
+      const Vec3 weighted = weightedGradient(pair);
+      moment += weighted * (rest[t] - rest[s]).transpose();
+      sum += weighted;
     }
     inverts_[s] = std::abs(moment.determinant()) > kDeterminantThreshold;
     correction_[s] = inverts_[s] ? Mat3(moment.inverse()) : Mat3::Identity();

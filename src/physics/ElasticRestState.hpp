@@ -5,7 +5,8 @@
 ///   L_s = (sum_{t in N0(s)} V0_t gradW(X_s - X_t) (x) (X_t - X_s))^-1 (kernel-gradient correction, I if
 ///         |det| <= 1e-9);
 ///   G0_s = sum_{t in N0(s)} V0_t gradW(X_s - X_t).
-/// Every term uses the rest gradients weighted by the neighbour's rest volume, so they are stored that way.
+/// Every term uses the rest gradients weighted by the neighbour's rest volume; L_s and G0_s are formed from
+/// the stored (rounded) gradients, so L_s inverts exactly the moment the terms sum.
 /// Everything is a function of X, ids and object ids, summed in persistent-id order, so a rebuild after a
 /// Morton sort, a particle removal or a restart gives the same numbers bit for bit.
 
@@ -29,7 +30,14 @@ public:
   std::size_t begin(std::size_t s) const { return static_cast<std::size_t>(offsets_[s]); }
   std::size_t end(std::size_t s) const { return static_cast<std::size_t>(offsets_[s + 1]); }
   Index neighbour(std::size_t pair) const { return neighbours_[pair]; }
-  const Vec3& weightedGradient(std::size_t pair) const { return weightedGradients_[pair]; }
+  Vec3 weightedGradient(std::size_t pair) const {
+    return volume_[static_cast<std::size_t>(neighbours_[pair])] * gradient(pair);
+  }
+  /// gradW(X_s - X_t) per pair, without the volume: for sums that fold V0_t into a per-particle factor.
+  Vec3 gradient(std::size_t pair) const {
+    const PairGradient& g = gradients_[pair];
+    return Vec3(g.x, g.y, g.z);
+  }
   double volume(std::size_t s) const { return volume_[s]; }
   double inverseVolume(std::size_t s) const { return shepard_[s]; }
   const Mat3& correction(std::size_t s) const { return correction_[s]; }
@@ -43,7 +51,12 @@ private:
   std::vector<std::int64_t> ids_; ///< persistent ids in the order of the last build
   std::vector<std::int64_t> offsets_;
   std::vector<Index> neighbours_;
-  std::vector<Vec3> weightedGradients_;
+  /// gradW(X_s - X_t) per pair in single precision, like the other pair data (PairFactor), and V0_t applied in
+  /// double when read: the two directions of a pair stay exact opposites, so elastic pair forces cancel.
+  struct PairGradient {
+    float x, y, z;
+  };
+  std::vector<PairGradient> gradients_;
   std::vector<double> volume_;
   std::vector<double> shepard_; ///< 1/V0_s
   std::vector<Mat3> correction_;
