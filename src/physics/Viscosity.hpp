@@ -30,9 +30,9 @@ private:
   /// One viscous set: the fluid, or a porous material with damping.
   struct Member {
     std::size_t set = 0, part = 0;
-    std::vector<PairFactor> pairCoefficient;            ///< kappa_ab s_ab per same-set pair (gradW = s x)
+    std::vector<PairFactor> pairCoefficient;              ///< kappa_ab s_ab per same-set pair (gradW = s x)
     std::vector<std::vector<PairFactor>> wallCoefficient; ///< kappa_ak s_ak per wall pair, per boundary set; none
-                                                      ///< without wall viscosity (mu_b = 0)
+                                                          ///< without wall viscosity (mu_b = 0)
   };
   /// Viscosity inside the set and at walls of `member` (pairs of different objects get 0 if `byObject`).
   void prepareMember(const StepContext& ctx, Member& member, double mu, double muWall, bool byObject);

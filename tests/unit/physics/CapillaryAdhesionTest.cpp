@@ -296,7 +296,8 @@ TEST(CapillaryPair, RestSolidDensityChangesTheCoefficientByTheDensityRatio) {
   }
   ASSERT_GT(diagonal[0], 0.0);
   // Two coefficients, each rounded once to single precision (kPairFactorRounding).
-  EXPECT_NEAR(diagonal[1] / diagonal[0], (pair.rhoMix + pair.rhoT) / (pair.rhoMix + pair.rhoB), 3.0 * kPairFactorRounding);
+  EXPECT_NEAR(diagonal[1] / diagonal[0], (pair.rhoMix + pair.rhoT) / (pair.rhoMix + pair.rhoB),
+              3.0 * kPairFactorRounding);
 }
 
 TEST(DragRestDensity, SolidSideScalesByCurrentOverBulkDensity) {
