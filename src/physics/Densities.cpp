@@ -102,7 +102,7 @@ void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& g
         const std::size_t j = static_cast<std::size_t>(jIndex);
         const Vec3 xij = xi - xb[j];
         const double dist = xij.norm();
-        const double s = static_cast<PairFactor>(kernel.gradFactor(dist));
+        const double s = static_cast<PairFactor>(kernel.gradFactor(dist)); // G sums what the solvers will read
         (*p.gradients)[pair++] = static_cast<PairFactor>(s);
         const double w = kernel.w(dist);
         if (p.fluidB && porous) fluidW += w;

@@ -63,8 +63,7 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
     shepard_[s] = shepard;
     volume_[s] = 1.0 / shepard;
   });
-  // Every V0 is known now: sum the moments of the weighted gradients as the terms will read them. (In a pass of its
-  // own: read back in the loop that stored it, GCC 12 at -O3 returned two of a gradient's three components unrounded.)
+  // Every V0 is known now: sum the moments of the weighted gradients exactly as the terms will read them (rounded).
   parallel::forEach(n, [&](std::size_t s) {
     Mat3 moment = Mat3::Zero();
     Vec3 sum = Vec3::Zero();

@@ -26,7 +26,6 @@ inline constexpr double kPairFactorRounding = std::numeric_limits<PairFactor>::e
 
 /// Per-pair kernel gradient factors s_ab (gradW_ab = s_ab x_ab), stored in the order of the neighbour
 /// lists so the iterative solvers do not re-evaluate the kernel.
-
 class PairGradients {
 public:
   void resize(std::size_t sets) {
