@@ -121,7 +121,8 @@ TEST(ParallelRun, TwoAndThreeRanksEqualTheSerialRunToRoundOff) {
         << pvd;
     ASSERT_EQ(parallel.run(POROSPH_RECONSTRUCT, "-time 0.1"), 0) << parallel.read("log.reconstructPar");
     // Round-off of sums in another order, in single-precision pair numbers now and then (kRoundOffDrift).
-    EXPECT_LT(largestShift(reference, parallel.particles("0.1", kRadius)), kRoundOffDrift) << ranks << " ranks, " << method;
+    EXPECT_LT(largestShift(reference, parallel.particles("0.1", kRadius)), kRoundOffDrift)
+        << ranks << " ranks, " << method;
   }
 }
 
