@@ -390,19 +390,33 @@ void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positio
         if (i >= withList) return;
         const Vec3& p = xa[i];
         const CellIndex c = cellOf(p);
-        const std::size_t before = out.size();
+        const Index skipped = self ? static_cast<Index>(i) : Index(-1);
+        // The x-neighbours of one (y, z) row are consecutive cells: one contiguous range of the sorted particles.
+        std::int64_t first[9], last[9];
+        int rows = 0;
+        std::size_t candidates = 0;
         for (std::int64_t z = std::max<std::int64_t>(c.iz - 1, 0); z <= std::min(c.iz + 1, nz - 1); ++z)
           for (std::int64_t y = std::max<std::int64_t>(c.iy - 1, 0); y <= std::min(c.iy + 1, ny - 1); ++y) {
-            // The x-neighbours of one (y, z) row are consecutive cells: one contiguous range.
             const std::int64_t row = nx * (y + ny * z);
-            const std::int64_t c0 = row + std::max<std::int64_t>(c.ix - 1, 0);
-            const std::int64_t c1 = row + std::min(c.ix + 1, nx - 1);
-            for (std::int64_t k = s.cellStart[c0]; k < s.cellStart[c1 + 1]; ++k) {
-              const Index j = s.index[static_cast<std::size_t>(k)];
-              if (self && static_cast<std::size_t>(j) == i) continue;
-              if ((p - sx[static_cast<std::size_t>(k)]).squaredNorm() < radius2) out.push_back(j);
-            }
+            first[rows] = s.cellStart[row + std::max<std::int64_t>(c.ix - 1, 0)];
+            last[rows] = s.cellStart[row + std::min(c.ix + 1, nx - 1) + 1];
+            candidates += static_cast<std::size_t>(last[rows] - first[rows]);
+            ++rows;
           }
+        // Branch-free, as in filterCandidates: about one candidate in four is a neighbour, in no order a branch
+        // predictor could learn.
+        const std::size_t before = out.size();
+        out.resize(before + candidates);
+        Index* const dst = out.data() + before;
+        std::size_t kept = 0;
+        for (int r = 0; r < rows; ++r)
+          for (std::int64_t k = first[r]; k < last[r]; ++k) {
+            const Index j = s.index[static_cast<std::size_t>(k)];
+            dst[kept] = j;
+            kept += static_cast<std::size_t>(((p - sx[static_cast<std::size_t>(k)]).squaredNorm() < radius2) &
+                                             (j != skipped));
+          }
+        out.resize(before + kept);
         if (ascending) sortAscending(out.data() + before, out.data() + out.size());
       });
     }
