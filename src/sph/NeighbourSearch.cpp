@@ -90,10 +90,10 @@ void NeighbourSearch::clearLists(std::vector<NeighbourList>& lists) const {
 template <class AppendNeighbours>
 void NeighbourSearch::assemble(std::size_t n, NeighbourList& list, const AppendNeighbours& append) {
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
-  std::vector<std::vector<Index>> chunkIndices(chunks);
+  std::vector<IndexBuffer> chunkIndices(chunks);
   std::vector<std::uint32_t> counts(n, 0);
   parallel::forEachTask(chunks, [&](std::size_t chunk) {
-    std::vector<Index>& out = chunkIndices[chunk];
+    IndexBuffer& out = chunkIndices[chunk];
     out.reserve(kChunk * 40);
     const std::size_t end = std::min(n, (chunk + 1) * kChunk);
     for (std::size_t i = chunk * kChunk; i < end; ++i) {
@@ -103,7 +103,7 @@ void NeighbourSearch::assemble(std::size_t n, NeighbourList& list, const AppendN
     }
   });
   std::uint64_t pairs = 0;
-  for (const std::vector<Index>& out : chunkIndices) pairs += out.size();
+  for (const IndexBuffer& out : chunkIndices) pairs += out.size();
   if (pairs > std::numeric_limits<std::uint32_t>::max())
     throw NumericalError(
         "neighbour search: " + std::to_string(pairs) + " pairs in one list, more than the " +
@@ -200,7 +200,7 @@ void NeighbourSearch::filterCandidates(const std::vector<const std::vector<Vec3>
     const std::size_t chunks = (movers.size() + kChunk - 1) / kChunk;
     std::vector<std::vector<std::pair<Index, Index>>> chunkPairs(chunks);
     parallel::forEachTask(chunks, [&](std::size_t chunk) {
-      std::vector<Index> near;
+      IndexBuffer near;
       for (std::size_t k = chunk * kChunk; k < std::min(movers.size(), (chunk + 1) * kChunk); ++k) {
         const Index f = movers[k];
         near.clear();
@@ -221,7 +221,7 @@ void NeighbourSearch::filterCandidates(const std::vector<const std::vector<Vec3>
       for (const auto& pair : pairs) extras[extraStart[static_cast<std::size_t>(pair.first) + 1]++] = pair.second;
   }
 
-  assemble(xa.size(), lists_[a * sets_ + b], [&](std::size_t i, std::vector<Index>& out) {
+  assemble(xa.size(), lists_[a * sets_ + b], [&](std::size_t i, IndexBuffer& out) {
     if (i >= withList) return;
     const Vec3& p = xa[i];
     const std::size_t used = out.size();
@@ -255,7 +255,7 @@ void NeighbourSearch::filterCandidates(const std::vector<const std::vector<Vec3>
 }
 
 void NeighbourSearch::searchAround(const std::vector<const std::vector<Vec3>*>& positions, std::size_t b, const Vec3& p,
-                                   std::int64_t self, bool withMovers, std::vector<Index>& out) const {
+                                   std::int64_t self, bool withMovers, IndexBuffer& out) const {
   const auto& xb = *positions[b];
   const double h2 = h_ * h_;
   const std::uint8_t* const moves = isMover_[b].empty() ? nullptr : isMover_[b].data();
@@ -386,7 +386,7 @@ void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positio
       const std::vector<Vec3>& sx = sortedX[b];
       const bool self = a == b;
       const std::size_t withList = listedOf(a, xa.size());
-      assemble(xa.size(), lists[a * sets_ + b], [&](std::size_t i, std::vector<Index>& out) {
+      assemble(xa.size(), lists[a * sets_ + b], [&](std::size_t i, IndexBuffer& out) {
         if (i >= withList) return;
         const Vec3& p = xa[i];
         const CellIndex c = cellOf(p);

@@ -15,6 +15,9 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
+#include <new>
+#include <utility>
 #include <vector>
 
 namespace poro {
@@ -76,6 +79,21 @@ public:
   std::size_t gridSearches() const { return gridSearches_; }
 
 private:
+  /// Leaves the elements a resize adds uninitialised: the lists' buffers grow by all candidates, are written, and
+  /// shrink to the neighbours kept, so zero-filling them first would be wasted.
+  template <class T> struct UninitialisedAllocator : std::allocator<T> {
+    template <class U> struct rebind {
+      using other = UninitialisedAllocator<U>;
+    };
+    UninitialisedAllocator() = default;
+    template <class U> UninitialisedAllocator(const UninitialisedAllocator<U>&) noexcept {}
+    template <class U> void construct(U* p) noexcept { ::new (static_cast<void*>(p)) U; }
+    template <class U, class... Args> void construct(U* p, Args&&... args) {
+      ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+  };
+  using IndexBuffer = std::vector<Index, UninitialisedAllocator<Index>>;
+
   /// Whether update() uses the skin for a step of `bulkStep` (else it searches at H in stencil order).
   bool skinPays(double bulkStep) const;
   struct CellGrid {
@@ -105,7 +123,7 @@ private:
   /// Appends to `out` the particles of set b within H of p that are not movers, searched in b's cells of the last
   /// grid search, and (withMovers) b's movers; `self` (skipped) is p's index when p is of set b, else -1.
   void searchAround(const std::vector<const std::vector<Vec3>*>& positions, std::size_t b, const Vec3& p,
-                    std::int64_t self, bool withMovers, std::vector<Index>& out) const;
+                    std::int64_t self, bool withMovers, IndexBuffer& out) const;
   /// Sorts positions xs (all inside `grid`) by cell; `inOrder` (if given) gets them in that order.
   static void sortIntoCells(const std::vector<Vec3>& xs, const CellGrid& grid, CellSort& cells,
                             std::vector<Vec3>* inOrder);
