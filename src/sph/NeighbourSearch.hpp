@@ -82,9 +82,7 @@ private:
   /// Leaves the elements a resize adds uninitialised: the lists' buffers grow by all candidates, are written, and
   /// shrink to the neighbours kept, so zero-filling them first would be wasted.
   template <class T> struct UninitialisedAllocator : std::allocator<T> {
-    template <class U> struct rebind {
-      using other = UninitialisedAllocator<U>;
-    };
+    template <class U> struct rebind { using other = UninitialisedAllocator<U>; };
     UninitialisedAllocator() = default;
     template <class U> UninitialisedAllocator(const UninitialisedAllocator<U>&) noexcept {}
     template <class U> void construct(U* p) noexcept { ::new (static_cast<void*>(p)) U; }
