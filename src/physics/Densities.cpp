@@ -102,8 +102,8 @@ void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& g
         const std::size_t j = static_cast<std::size_t>(jIndex);
         const Vec3 xij = xi - xb[j];
         const double dist = xij.norm();
-        const double s = static_cast<PairFactor>(kernel.gradFactor(dist)); // G sums what the solvers will read
-        (*p.gradients)[pair++] = static_cast<PairFactor>(s);
+        const PairFactor s = static_cast<PairFactor>(kernel.gradFactor(dist)); // G sums what the solvers will read
+        (*p.gradients)[pair++] = s;
         const double w = kernel.w(dist);
         if (p.fluidB && porous) fluidW += w;
         if (!p.counts) continue;
@@ -125,8 +125,8 @@ void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& g
         const std::size_t kk = static_cast<std::size_t>(k);
         const Vec3 xik = xi - (*wall.x)[kk];
         const double dist = xik.norm();
-        const double s = static_cast<PairFactor>(kernel.gradFactor(dist));
-        (*wall.gradients)[wp++] = static_cast<PairFactor>(s);
+        const PairFactor s = static_cast<PairFactor>(kernel.gradFactor(dist));
+        (*wall.gradients)[wp++] = s;
         const double vk = (*wall.volume)[kk];
         wallW += vk * kernel.w(dist);
         g += (vk * s) * xik;
