@@ -39,6 +39,36 @@ struct Wall {
   std::vector<PairFactor>* gradients;
 };
 
+/// One particle's offsets to its neighbours in one set, and their kernel values (CubicKernel::evaluate): a
+/// buffer per thread, grown to the longest list seen.
+struct PairScratch {
+  std::vector<double> dx, dy, dz, dist, w;
+
+  /// Fills the offsets x_i - x_j over `range` and evaluates W into w and s into `factors`; returns the count.
+  std::size_t evaluate(const CubicKernel& kernel, const Vec3& xi, const std::vector<Vec3>& xb,
+                       NeighbourList::Range range, PairFactor* factors) {
+    const std::size_t n = range.size();
+    if (dx.size() < n)
+      for (auto* buffer : {&dx, &dy, &dz, &dist, &w}) buffer->resize(n);
+    std::size_t k = 0;
+    for (Index j : range) {
+      const Vec3 d = xi - xb[static_cast<std::size_t>(j)];
+      dx[k] = d.x();
+      dy[k] = d.y();
+      dz[k] = d.z();
+      ++k;
+    }
+    kernel.evaluate(n, dx.data(), dy.data(), dz.data(), dist.data(), w.data(), factors);
+    return n;
+  }
+  Vec3 offset(std::size_t k) const { return Vec3(dx[k], dy[k], dz[k]); }
+};
+
+PairScratch& pairScratch() {
+  thread_local PairScratch scratch;
+  return scratch;
+}
+
 void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& gradients) {
   const ParticleSystem& ps = ctx.particles;
   const CubicKernel& kernel = ctx.kernel;
@@ -90,28 +120,30 @@ void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& g
 
   parallel::forEach(ctx.owned(a), [&](std::size_t i) {
     const Vec3 xi = x[i];
+    PairScratch& scratch = pairScratch();
     double sumW = self * kernel.w0(); // volume factors times W, times V below
     double solidW = 0.0;              // fluid: sum (1 - phi_t) W_it
     double fluidW = 0.0;              // porous: sum W_sj over fluid
     Vec3 g = Vec3::Zero();
     double q = 0.0;
     for (const Partner& p : partners) {
-      std::size_t pair = p.list->offset(i);
-      const std::vector<Vec3>& xb = *p.x;
-      for (Index jIndex : p.list->of(i)) {
-        const std::size_t j = static_cast<std::size_t>(jIndex);
-        const Vec3 xij = xi - xb[j];
-        const double dist = xij.norm();
-        const PairFactor s = static_cast<PairFactor>(kernel.gradFactor(dist)); // G sums what the solvers will read
-        (*p.gradients)[pair++] = s;
-        const double w = kernel.w(dist);
-        if (p.fluidB && porous) fluidW += w;
-        if (!p.counts) continue;
+      const NeighbourList::Range range = p.list->of(i);
+      // G sums the stored (rounded) s, the numbers the solvers will read.
+      PairFactor* s = p.gradients->data() + p.list->offset(i);
+      const std::size_t n = scratch.evaluate(kernel, xi, *p.x, range, s);
+      const double* w = scratch.w.data();
+      if (p.fluidB && porous)
+        for (std::size_t k = 0; k < n; ++k) fluidW += w[k];
+      if (!p.counts) continue;
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t j = static_cast<std::size_t>(range.first[k]);
+        const Vec3 xij = scratch.offset(k);
         const double f = p.coupling.factorOf(objectA[i] == p.objectB[j]);
-        sumW += f * w;
-        solidW += p.solidShare * w;
-        g += (f * s) * xij;
-        if (p.coupling.samePhase && !(p.fixedB && p.fixedB[j])) q += f * f * p.massRatio * s * s * xij.squaredNorm();
+        sumW += f * w[k];
+        solidW += p.solidShare * w[k];
+        g += (f * s[k]) * xij;
+        if (p.coupling.samePhase && !(p.fixedB && p.fixedB[j]))
+          q += f * f * p.massRatio * s[k] * s[k] * xij.squaredNorm();
       }
     }
     double rt = volume * sumW;
@@ -120,17 +152,15 @@ void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& g
     g *= volume;
     q *= volume * volume;
     for (const Wall& wall : walls) {
-      std::size_t wp = wall.list->offset(i);
-      for (Index k : wall.list->of(i)) {
-        const std::size_t kk = static_cast<std::size_t>(k);
-        const Vec3 xik = xi - (*wall.x)[kk];
-        const double dist = xik.norm();
-        const PairFactor s = static_cast<PairFactor>(kernel.gradFactor(dist));
-        (*wall.gradients)[wp++] = s;
-        const double vk = (*wall.volume)[kk];
-        wallW += vk * kernel.w(dist);
-        g += (vk * s) * xik;
-        if (contact) wallG += (vk * s) * xik;
+      const NeighbourList::Range range = wall.list->of(i);
+      PairFactor* s = wall.gradients->data() + wall.list->offset(i);
+      const std::size_t n = scratch.evaluate(kernel, xi, *wall.x, range, s);
+      for (std::size_t k = 0; k < n; ++k) {
+        const double vk = (*wall.volume)[static_cast<std::size_t>(range.first[k])];
+        const Vec3 xik = scratch.offset(k);
+        wallW += vk * scratch.w[k];
+        g += (vk * s[k]) * xik;
+        if (contact) wallG += (vk * s[k]) * xik;
       }
     }
     rt += wallW;
