@@ -44,9 +44,9 @@ struct Wall {
 struct PairScratch {
   std::vector<double> dx, dy, dz, dist, w;
 
-  /// Fills the offsets x_i - x_j over `range` and evaluates W into w and s into `factors`; returns the count.
-  std::size_t evaluate(const CubicKernel& kernel, const Vec3& xi, const std::vector<Vec3>& xb,
-                       NeighbourList::Range range, PairFactor* factors) {
+  /// Fills the offsets x_i - x_j over `range` and their distances and W; returns the count.
+  std::size_t values(const CubicKernel& kernel, const Vec3& xi, const std::vector<Vec3>& xb,
+                     NeighbourList::Range range) {
     const std::size_t n = range.size();
     if (dx.size() < n)
       for (auto* buffer : {&dx, &dy, &dz, &dist, &w}) buffer->resize(n);
@@ -58,7 +58,14 @@ struct PairScratch {
       dz[k] = d.z();
       ++k;
     }
-    kernel.evaluate(n, dx.data(), dy.data(), dz.data(), dist.data(), w.data(), factors);
+    kernel.values(n, dx.data(), dy.data(), dz.data(), dist.data(), w.data());
+    return n;
+  }
+  /// values(), and s into `factors`.
+  std::size_t evaluate(const CubicKernel& kernel, const Vec3& xi, const std::vector<Vec3>& xb,
+                       NeighbourList::Range range, PairFactor* factors) {
+    const std::size_t n = values(kernel, xi, xb, range);
+    kernel.gradientFactors(n, dist.data(), factors);
     return n;
   }
   Vec3 offset(std::size_t k) const { return Vec3(dx[k], dy[k], dz[k]); }
@@ -203,12 +210,12 @@ void computeSaturation(const StepContext& ctx, std::size_t a) {
     }
     double n = (m / rho[i]) * kernel.w0();
     double coverage = poreFill ? poreFill->volumeWeight(0.0) : 0.0; // sum_t V Wbar_st
-    for (Index jIndex : same.of(i)) {
-      const std::size_t j = static_cast<std::size_t>(jIndex);
-      const double distance = (x[i] - x[j]).norm();
-      n += (m / rho[j]) * kernel.w(distance);
-      if (poreFill) coverage += poreFill->volumeWeight(distance);
-    }
+    PairScratch& scratch = pairScratch();
+    const NeighbourList::Range range = same.of(i);
+    const std::size_t count = scratch.values(kernel, x[i], x, range);
+    for (std::size_t k = 0; k < count; ++k) n += (m / rho[static_cast<std::size_t>(range.first[k])]) * scratch.w[k];
+    if (poreFill)
+      for (std::size_t k = 0; k < count; ++k) coverage += poreFill->volumeWeight(scratch.dist[k]);
     saturation[i] = std::clamp(fluidVolume[i] / (phi * n), 0.0, 1.0);
     if (!poreFill) return;
     if (restCoverage && restCoverage[i] < 0.0) restCoverage[i] = coverage; // the first step: at rest

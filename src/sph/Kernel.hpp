@@ -39,14 +39,12 @@ public:
     return kGrad_ * g * invH_ / dist;
   }
 
-  /// W and s of n pairs given by their offsets x_a - x_b in components, and their distances: the numbers w() and
-  /// gradFactor() give, bit for bit, from two loops without branches (both pieces formed, one kept) that the
-  /// compiler vectorises. One square root and one division per pair bound the scalar loops that call w() and
-  /// gradFactor(). (In one loop GCC 12 does not if-convert the selects.)
-  template <class Factor>
-  void evaluate(std::size_t n, const double* dx, const double* dy, const double* dz, double* dist, double* w,
-                Factor* s) const {
-    const double invH = invH_, kW = kW_, kGrad = kGrad_; // locals: the stores below cannot change them
+  /// The distances and W of n pairs given by their offsets x_a - x_b in components: the numbers w() gives, bit
+  /// for bit, from a loop without branches (both pieces formed, one kept) that the compiler vectorises, since one
+  /// square root per pair bounds the scalar loops. gradientFactors() then gives s from the distances, in a loop of
+  /// its own: in one loop GCC 12 does not if-convert the selects.
+  void values(std::size_t n, const double* dx, const double* dy, const double* dz, double* dist, double* w) const {
+    const double invH = invH_, kW = kW_; // locals: the stores below cannot change them
     for (std::size_t k = 0; k < n; ++k) {
       const double d = std::sqrt(dx[k] * dx[k] + dy[k] * dy[k] + dz[k] * dz[k]);
       const double q = d * invH;
@@ -57,6 +55,12 @@ public:
       w[k] = q > 1.0 ? 0.0 : kept;
       dist[k] = d;
     }
+  }
+
+  /// s of n pairs from their distances: the numbers gradFactor() gives, bit for bit, vectorised (one division per
+  /// pair).
+  template <class Factor> void gradientFactors(std::size_t n, const double* dist, Factor* s) const {
+    const double invH = invH_, kGrad = kGrad_;
     for (std::size_t k = 0; k < n; ++k) {
       const double d = dist[k];
       const double q = d * invH;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <random>
+#include <vector>
 
 namespace poro {
 namespace {
@@ -172,6 +173,35 @@ TEST(CubicKernel, GradFactorConsistentWithGradAndSymmetric) {
     EXPECT_EQ(k.grad(-x), Vec3(-g)); // antisymmetric gradient, symmetric W
     EXPECT_EQ(k.w(-x), k.w(x));
     EXPECT_LE(k.gradFactor(x.norm()), 0.0); // W never increases outwards
+  }
+}
+
+TEST(CubicKernel, BatchEvaluationIsTheScalarOneBitForBit) {
+  // The density pass reads W and s from values() and gradientFactors(): they must be w() and gradFactor() exactly,
+  // on both pieces, at the branch points, at the support's edge, beyond it and at the origin's cut-off.
+  const CubicKernel k(kH);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> uq(0.0, 1.2);
+  std::vector<Vec3> offsets = {Vec3::Zero(), Vec3(1e-9, 0.0, 0.0), Vec3(2e-9, 0.0, 0.0), Vec3(0.5 * kH, 0.0, 0.0),
+                               Vec3(0.0, kH, 0.0), Vec3(0.0, 0.0, 1.0000001 * kH)};
+  for (int n = 0; n < 1001; ++n) offsets.push_back(uq(rng) * kH * randomUnit(rng)); // odd: a scalar remainder
+  const std::size_t n = offsets.size();
+  std::vector<double> dx(n), dy(n), dz(n), dist(n), w(n), s(n);
+  std::vector<float> rounded(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    dx[i] = offsets[i].x();
+    dy[i] = offsets[i].y();
+    dz[i] = offsets[i].z();
+  }
+  k.values(n, dx.data(), dy.data(), dz.data(), dist.data(), w.data());
+  k.gradientFactors(n, dist.data(), s.data());
+  k.gradientFactors(n, dist.data(), rounded.data());
+  for (std::size_t i = 0; i < n; ++i) {
+    const double d = offsets[i].norm();
+    EXPECT_EQ(dist[i], d) << i;
+    EXPECT_EQ(w[i], k.w(d)) << i;
+    EXPECT_EQ(s[i], k.gradFactor(d)) << i;
+    EXPECT_EQ(rounded[i], static_cast<float>(k.gradFactor(d))) << i;
   }
 }
 
