@@ -182,8 +182,9 @@ TEST(CubicKernel, BatchEvaluationIsTheScalarOneBitForBit) {
   const CubicKernel k(kH);
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> uq(0.0, 1.2);
-  std::vector<Vec3> offsets = {Vec3::Zero(), Vec3(1e-9, 0.0, 0.0), Vec3(2e-9, 0.0, 0.0), Vec3(0.5 * kH, 0.0, 0.0),
-                               Vec3(0.0, kH, 0.0), Vec3(0.0, 0.0, 1.0000001 * kH)};
+  std::vector<Vec3> offsets = {Vec3::Zero(),         Vec3(1e-9, 0.0, 0.0),
+                               Vec3(2e-9, 0.0, 0.0), Vec3(0.5 * kH, 0.0, 0.0),
+                               Vec3(0.0, kH, 0.0),   Vec3(0.0, 0.0, 1.0000001 * kH)};
   for (int n = 0; n < 1001; ++n) offsets.push_back(uq(rng) * kH * randomUnit(rng)); // odd: a scalar remainder
   const std::size_t n = offsets.size();
   std::vector<double> dx(n), dy(n), dz(n), dist(n), w(n), s(n);
