@@ -34,7 +34,8 @@ void forEachTask(std::size_t n, const Body& body) {
 inline constexpr std::size_t kReduceBlock = 4096;
 
 /// Deterministic reduction: sum of value(i) for i in [0, n) with a blocking that does not depend on the
-/// thread count. T needs T{} as zero and operator+=.
+/// thread count. T needs T{} as zero and operator+=. Whole blocks go to the threads, so a set of a few blocks
+/// divides unevenly: costly per-particle work belongs in a forEach that stores what is summed here.
 template <class T, class Value>
 T sum(std::size_t n, const Value& value) {
   const std::size_t blocks = (n + kReduceBlock - 1) / kReduceBlock;
