@@ -1,14 +1,20 @@
 #include "physics/StateSnapshot.hpp"
 
+#include "core/Parallel.hpp"
+
 namespace poro {
 
 namespace {
 
-/// Copies `from` into the alternative T of `to`, reusing its capacity when it already holds a T.
+/// Copies `from` into the alternative T of `to`, reusing its capacity when it already holds a T. On all threads:
+/// the copy is taken before every step, and the other threads would wait for it.
 template <class T, class Variant> void copyInto(Variant& to, const std::vector<T>& from) {
   auto* held = std::get_if<std::vector<T>>(&to);
   if (!held) held = &to.template emplace<std::vector<T>>();
-  held->assign(from.begin(), from.end());
+  held->resize(from.size());
+  T* const out = held->data();
+  const T* const in = from.data();
+  parallel::forEach(from.size(), [&](std::size_t i) { out[i] = in[i]; });
 }
 
 } // namespace
