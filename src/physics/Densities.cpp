@@ -39,7 +39,7 @@ struct Wall {
   std::vector<PairFactor>* gradients;
 };
 
-/// One particle's offsets to its neighbours in one set, and their kernel values (CubicKernel::evaluate): a
+/// One particle's offsets to its neighbours in one set, and their kernel values (CubicKernel::values): a
 /// buffer per thread, grown to the longest list seen.
 struct PairScratch {
   std::vector<double> dx, dy, dz, dist, w;
