@@ -22,9 +22,7 @@ public:
   double w(double dist) const {
     const double q = dist * invH_;
     if (q > 1.0) return 0.0;
-    if (q <= 0.5) return kW_ * (6.0 * q * q * q - 6.0 * q * q + 1.0);
-    const double s = 1.0 - q;
-    return 2.0 * kW_ * s * s * s;
+    return q <= 0.5 ? innerW(kW_, q) : shellW(kW_, q);
   }
   double w(const Vec3& x) const { return w(x.norm()); }
 
@@ -35,8 +33,7 @@ public:
   double gradFactor(double dist) const {
     const double q = dist * invH_;
     if (dist <= 1e-9 || q > 1.0) return 0.0;
-    const double g = q <= 0.5 ? q * (3.0 * q - 2.0) : -(1.0 - q) * (1.0 - q);
-    return kGrad_ * g * invH_ / dist;
+    return kGrad_ * gradPiece(q) * invH_ / dist;
   }
 
   /// The distances and W of n pairs given by their offsets x_a - x_b in components: the numbers w() gives, bit
@@ -48,9 +45,7 @@ public:
     for (std::size_t k = 0; k < n; ++k) {
       const double d = std::sqrt(dx[k] * dx[k] + dy[k] * dy[k] + dz[k] * dz[k]);
       const double q = d * invH;
-      const double outer = 1.0 - q;
-      const double inner = kW * (6.0 * q * q * q - 6.0 * q * q + 1.0);
-      const double shell = 2.0 * kW * outer * outer * outer;
+      const double inner = innerW(kW, q), shell = shellW(kW, q);
       const double kept = q <= 0.5 ? inner : shell;
       w[k] = q > 1.0 ? 0.0 : kept;
       dist[k] = d;
@@ -64,13 +59,21 @@ public:
     for (std::size_t k = 0; k < n; ++k) {
       const double d = dist[k];
       const double q = d * invH;
-      const double g = q <= 0.5 ? q * (3.0 * q - 2.0) : -(1.0 - q) * (1.0 - q);
-      const double factor = kGrad * g * invH / d;
+      const double factor = kGrad * gradPiece(q) * invH / d;
       s[k] = static_cast<Factor>(d <= 1e-9 || q > 1.0 ? 0.0 : factor);
     }
   }
 
 private:
+  // The spline's pieces for q = dist / H, shared by the scalar and the batch evaluations so they agree bit for bit.
+  static double innerW(double kW, double q) { return kW * (6.0 * q * q * q - 6.0 * q * q + 1.0); } // q <= 1/2
+  static double shellW(double kW, double q) {                                                      // 1/2 < q <= 1
+    const double s = 1.0 - q;
+    return 2.0 * kW * s * s * s;
+  }
+  /// dW/dq over the gradient's constant, on both pieces.
+  static double gradPiece(double q) { return q <= 0.5 ? q * (3.0 * q - 2.0) : -(1.0 - q) * (1.0 - q); }
+
   double h_, invH_, kW_, kGrad_;
 };
 
