@@ -111,34 +111,56 @@ vtkSmartPointer<vtkDoubleArray> wrapDoubles(const char* name, const double* valu
   return array;
 }
 
-vtkSmartPointer<vtkDataArray> toVtk(const ParticleSet& set, const ParticleSet::FieldInfo& info) {
-  const std::size_t n = set.size();
+/// The values of Real or Vec3 field `info` of `set` as a flat array of doubles.
+const double* doublesOf(const ParticleSet& set, const ParticleSet::FieldInfo& info) {
+  if (info.type == FieldType::Real) return set.real(info.name).data();
+  const auto& v = set.vec3(info.name);
+  return v.empty() ? nullptr : v.front().data();
+}
+
+/// Field `info` of every part, one after the other, as the file's array (`count` tuples in all). A Real or Vec3
+/// field of a single part is wrapped, not copied.
+vtkSmartPointer<vtkDataArray> toVtk(const ParticleFile& contents, const ParticleSet::FieldInfo& info, const char* name,
+                                    std::size_t count) {
   switch (info.type) {
-  case FieldType::Real: return wrapDoubles(info.name.c_str(), set.real(info.name).data(), n, 1);
+  case FieldType::Real:
   case FieldType::Vec3: {
-    const auto& v = set.vec3(info.name);
-    return wrapDoubles(info.name.c_str(), n ? v.front().data() : nullptr, n, 3);
+    const int components = info.type == FieldType::Real ? 1 : 3;
+    if (contents.parts.size() == 1)
+      return wrapDoubles(name, doublesOf(*contents.parts.front(), info), count, components);
+    auto array = vtkSmartPointer<vtkDoubleArray>::New();
+    array->SetName(name);
+    array->SetNumberOfComponents(components);
+    array->SetNumberOfTuples(static_cast<vtkIdType>(count));
+    double* out = array->GetPointer(0);
+    for (const ParticleSet* part : contents.parts) {
+      const std::size_t values = components * part->size();
+      if (values) std::copy_n(doublesOf(*part, info), values, out);
+      out += values;
+    }
+    return array;
   }
   case FieldType::Mat3: {
     // Eigen stores column-major; the file is row-major (xx xy xz yx ...), as ParaView's tensor display expects.
-    const auto& m = set.mat3(info.name);
     auto array = vtkSmartPointer<vtkDoubleArray>::New();
-    array->SetName(info.name.c_str());
+    array->SetName(name);
     array->SetNumberOfComponents(9);
-    array->SetNumberOfTuples(static_cast<vtkIdType>(n));
+    array->SetNumberOfTuples(static_cast<vtkIdType>(count));
     double* out = array->GetPointer(0);
-    for (std::size_t i = 0; i < n; ++i)
-      for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) out[9 * i + 3 * r + c] = m[i](r, c);
+    for (const ParticleSet* part : contents.parts)
+      for (const Mat3& m : part->mat3(info.name))
+        for (int r = 0; r < 3; ++r)
+          for (int c = 0; c < 3; ++c) *out++ = m(r, c);
     return array;
   }
   case FieldType::Int: {
-    const auto& values = set.integer(info.name);
     auto array = vtkSmartPointer<vtkTypeInt64Array>::New();
-    array->SetName(info.name.c_str());
+    array->SetName(name);
     array->SetNumberOfComponents(1);
-    array->SetNumberOfTuples(static_cast<vtkIdType>(n));
-    for (std::size_t i = 0; i < n; ++i) array->SetValue(static_cast<vtkIdType>(i), values[i]);
+    array->SetNumberOfTuples(static_cast<vtkIdType>(count));
+    vtkTypeInt64* out = array->GetPointer(0);
+    for (const ParticleSet* part : contents.parts)
+      for (const std::int64_t value : part->integer(info.name)) *out++ = value;
     return array;
   }
   }
@@ -174,19 +196,27 @@ void presetFiniteNormRange(vtkDoubleArray* array) {
 }
 
 /// Name of the first written field holding NaN or inf, or "".
-std::string firstNonFiniteOutputField(const ParticleSet& set) {
-  for (const auto& info : set.fields()) {
-    if ((info.role & Output) == 0) continue;
-    std::size_t count = 0;
-    const double* values = nullptr;
-    switch (info.type) {
-    case FieldType::Real: count = set.size(); values = set.real(info.name).data(); break;
-    case FieldType::Vec3: count = 3 * set.size(); values = count ? set.vec3(info.name).front().data() : nullptr; break;
-    case FieldType::Mat3: count = 9 * set.size(); values = count ? set.mat3(info.name).front().data() : nullptr; break;
-    case FieldType::Int: break;
+std::string firstNonFiniteOutputField(const ParticleFile& contents) {
+  for (const auto& info : contents.fields) {
+    for (const ParticleSet* part : contents.parts) {
+      std::size_t count = 0;
+      const double* values = nullptr;
+      switch (info.type) {
+      case FieldType::Real:
+      case FieldType::Vec3:
+        count = (info.type == FieldType::Real ? 1 : 3) * part->size();
+        values = doublesOf(*part, info);
+        break;
+      case FieldType::Mat3:
+        count = 9 * part->size();
+        values = count ? part->mat3(info.name).front().data() : nullptr;
+        break;
+      case FieldType::Int:
+        break;
+      }
+      for (std::size_t k = 0; k < count; ++k)
+        if (!std::isfinite(values[k])) return info.name;
     }
-    for (std::size_t k = 0; k < count; ++k)
-      if (!std::isfinite(values[k])) return info.name;
   }
   return {};
 }
@@ -198,12 +228,13 @@ void addString(vtkFieldData* data, const char* name, const std::string& value) {
   data->AddArray(array);
 }
 
-vtkSmartPointer<vtkPolyData> toPolyData(const ParticleSet& set) {
-  const std::size_t n = set.size();
+vtkSmartPointer<vtkPolyData> toPolyData(const ParticleFile& contents) {
+  std::size_t n = 0;
+  for (const ParticleSet* part : contents.parts) n += part->size();
   auto poly = vtkSmartPointer<vtkPolyData>::New();
 
   vtkNew<vtkPoints> points;
-  points->SetData(wrapDoubles("Points", n ? set.x().front().data() : nullptr, n, 3));
+  points->SetData(toVtk(contents, {field::x, FieldType::Vec3, Restart}, "Points", n));
   poly->SetPoints(points);
 
   // One VTK_VERTEX per particle: without cells ParaView draws nothing in Surface representation.
@@ -214,13 +245,11 @@ vtkSmartPointer<vtkPolyData> toPolyData(const ParticleSet& set) {
   vertices->SetData(1, connectivity);
   poly->SetVerts(vertices);
 
-  for (const auto& info : set.fields()) {
-    if ((info.role & Output) == 0 || info.name == field::x) continue;
-    poly->GetPointData()->AddArray(toVtk(set, info));
-  }
+  for (const auto& info : contents.fields)
+    if (info.name != field::x) poly->GetPointData()->AddArray(toVtk(contents, info, info.name.c_str(), n));
 
-  addString(poly->GetFieldData(), setNameKey, set.name());
-  addString(poly->GetFieldData(), kindKey, toString(set.kind()));
+  addString(poly->GetFieldData(), setNameKey, contents.name);
+  addString(poly->GetFieldData(), kindKey, toString(contents.kind));
   return poly;
 }
 
@@ -241,9 +270,9 @@ std::string errorCodeText(unsigned long code) {
   throw OutputError(file.string() + ": " + what);
 }
 
-/// Writes `set` with vtkXMLPolyDataWriter to `temporary`; errors name the final `file`.
-void writeVtk(const ParticleSet& set, const fs::path& temporary, const fs::path& file, bool binary) {
-  const vtkSmartPointer<vtkPolyData> poly = toPolyData(set);
+/// Writes `contents` with vtkXMLPolyDataWriter to `temporary`; errors name the final `file`.
+void writeVtk(const ParticleFile& contents, const fs::path& temporary, const fs::path& file, bool binary) {
+  const vtkSmartPointer<vtkPolyData> poly = toPolyData(contents);
   VtkMessages messages; // declared before the writer so it outlives every callback
   vtkNew<vtkXMLPolyDataWriter> writer;
   messages.observe(writer);
@@ -627,7 +656,18 @@ void scanArrays(const fs::path& file, std::vector<ArrayElement>& arrays) {
 
 } // namespace
 
+ParticleFile particleFileOf(const ParticleSet& set) {
+  ParticleFile contents{set.name(), set.kind(), {&set}, {}};
+  for (const auto& info : set.fields())
+    if (info.role & Output) contents.fields.push_back(info);
+  return contents;
+}
+
 void writeParticleSet(const ParticleSet& set, const fs::path& file, bool binary) {
+  writeParticleFile(particleFileOf(set), file, binary);
+}
+
+void writeParticleFile(const ParticleFile& contents, const fs::path& file, bool binary) {
   const fs::path temporary = temporarySibling(file);
   {
     // Create the file ourselves first: a missing or read-only directory then gets the OS's reason,
@@ -640,7 +680,7 @@ void writeParticleSet(const ParticleSet& set, const fs::path& file, bool binary)
   if (!binary) {
     // VTK 9.1 prints NaN and inf in ascii files but its reader (and so ParaView) rejects them; a diverged
     // state is exactly what one wants to look at, so keep it readable.
-    if (const std::string bad = firstNonFiniteOutputField(set); !bad.empty()) {
+    if (const std::string bad = firstNonFiniteOutputField(contents); !bad.empty()) {
       log::warning(file.string() + ": field '" + bad +
                    "' holds NaN or infinite values, which VTK cannot read back from ascii; writing binary");
       binary = true;
@@ -648,7 +688,7 @@ void writeParticleSet(const ParticleSet& set, const fs::path& file, bool binary)
   }
 
   try {
-    writeVtk(set, temporary, file, binary);
+    writeVtk(contents, temporary, file, binary);
   } catch (...) {
     std::error_code ignored;
     fs::remove(temporary, ignored);

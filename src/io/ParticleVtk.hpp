@@ -2,13 +2,13 @@
 /// Particle sets as VTK XML PolyData (.vtp): what time directories hold and ParaView shows
 /// (ARCHITECTURE.md "A case directory"). VTK itself stays inside ParticleVtk.cpp.
 
+#include "sph/ParticleSet.hpp"
+
 #include <filesystem>
 #include <string>
 #include <vector>
 
 namespace poro {
-
-class ParticleSet;
 
 /// Writes every field whose role includes Output (Scratch fields are skipped) as a .vtp file.
 /// Points are field "x" (Float64, not repeated as point data), one vertex cell per particle so ParaView
@@ -21,6 +21,22 @@ class ParticleSet;
 /// The file is written to a temporary sibling and renamed over `file`, so a crash never leaves a
 /// half-written file. Throws OutputError naming the file.
 void writeParticleSet(const ParticleSet& set, const std::filesystem::path& file, bool binary);
+
+/// What one file holds when it is not one set: `parts` one after the other (porous.vtp holds every porous set),
+/// named `name` of kind `kind`, with the point arrays `fields`, which every part has.
+struct ParticleFile {
+  std::string name;
+  SetKind kind = SetKind::Fluid;
+  std::vector<const ParticleSet*> parts;
+  std::vector<ParticleSet::FieldInfo> fields;
+};
+
+/// One set's file, as writeParticleSet writes it: its fields of role Output or Restart, in its order.
+ParticleFile particleFileOf(const ParticleSet& set);
+
+/// Writes `contents` as writeParticleSet writes one set. The parts' fields are copied once into the file's
+/// arrays; a file of one part is written from the set's own storage, as writeParticleSet does.
+void writeParticleFile(const ParticleFile& contents, const std::filesystem::path& file, bool binary);
 
 /// Reads a .vtp written by writeParticleSet (or any PolyData whose point arrays fit the registry) into
 /// `set`: resizes it to the number of points (fields absent from the file become zero), copies the points

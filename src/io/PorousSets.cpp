@@ -45,28 +45,6 @@ void registerField(ParticleSet& set, const FieldInfo& f) {
   }
 }
 
-template <class T> void copyAt(const std::vector<T>& from, std::vector<T>& to, std::size_t offset) {
-  std::copy(from.begin(), from.end(), to.begin() + static_cast<std::ptrdiff_t>(offset));
-}
-
-/// Copies field `f` of `from` (all of it) into `to` starting at slot `offset`.
-void appendField(const ParticleSet& from, ParticleSet& to, std::size_t offset, const FieldInfo& f) {
-  switch (f.type) {
-  case FieldType::Real:
-    copyAt(from.real(f.name), to.real(f.name), offset);
-    break;
-  case FieldType::Vec3:
-    copyAt(from.vec3(f.name), to.vec3(f.name), offset);
-    break;
-  case FieldType::Mat3:
-    copyAt(from.mat3(f.name), to.mat3(f.name), offset);
-    break;
-  case FieldType::Int:
-    copyAt(from.integer(f.name), to.integer(f.name), offset);
-    break;
-  }
-}
-
 template <class T> void gather(const std::vector<T>& from, std::vector<T>& to, const std::vector<std::size_t>& slots) {
   for (std::size_t k = 0; k < slots.size(); ++k) to[k] = from[slots[k]];
 }
@@ -103,33 +81,22 @@ bool hasPorousSets(const ParticleSystem& particles) {
   return false;
 }
 
-ParticleSet mergePorousSets(const ParticleSystem& particles) {
-  std::vector<const ParticleSet*> sets;
+ParticleFile porousFile(const ParticleSystem& particles) {
+  ParticleFile file{kPorousSetName, SetKind::Porous, {}, {}};
   for (std::size_t s = 0; s < particles.size(); ++s)
-    if (particles[s].kind() == SetKind::Porous) sets.push_back(&particles[s]);
-
-  ParticleSet merged(kPorousSetName, SetKind::Porous);
-  if (sets.empty()) return merged;
-  const std::vector<FieldInfo> fields = writtenFields(*sets.front());
-  std::size_t total = 0;
-  for (const ParticleSet* set : sets) {
+    if (particles[s].kind() == SetKind::Porous) file.parts.push_back(&particles[s]);
+  if (file.parts.empty()) return file;
+  file.fields = writtenFields(*file.parts.front());
+  for (const ParticleSet* set : file.parts) {
     const FieldInfo* material = set->info(field::materialId);
     if (!material || material->type != FieldType::Int || material->role == Scratch)
       throw std::logic_error("porous set '" + set->name() + "' has no Int field '" + field::materialId +
                              "' of role Output or Restart; porous.vtp could not say which material its particles are");
-    if (!sameFields(writtenFields(*set), fields))
-      throw std::logic_error("porous sets '" + sets.front()->name() + "' and '" + set->name() +
+    if (!sameFields(writtenFields(*set), file.fields))
+      throw std::logic_error("porous sets '" + file.parts.front()->name() + "' and '" + set->name() +
                              "' have different output fields; they cannot share porous.vtp");
-    total += set->size();
   }
-  for (const FieldInfo& f : fields) registerField(merged, f);
-  merged.resize(total);
-  std::size_t offset = 0;
-  for (const ParticleSet* set : sets) {
-    for (const FieldInfo& f : fields) appendField(*set, merged, offset, f);
-    offset += set->size();
-  }
-  return merged;
+  return file;
 }
 
 void splitPorousSet(ParticleSet&& merged, const std::vector<PorousMaterial>& materials, ParticleSystem& into,

@@ -4,6 +4,7 @@
 /// ParticleSystem order, whose Int field `materialId` (physics/FieldNames.hpp) is the index of each
 /// particle's material in constant/porosityProperties.
 
+#include "io/ParticleVtk.hpp"
 #include "physics/PorousMaterial.hpp"
 #include "sph/ParticleSystem.hpp"
 
@@ -18,11 +19,11 @@ inline constexpr const char* kPorousSetName = "porous";
 /// True if `particles` holds at least one set of kind Porous.
 bool hasPorousSets(const ParticleSystem& particles);
 
-/// One set named "porous" (kind Porous) holding every particle of every porous set of `particles`, in
-/// ParticleSystem order and, within a set, in its order. It carries every field of role Output or Restart
-/// with that role; Scratch fields are left out. Throws std::logic_error when the porous sets do not have
-/// the same Output/Restart fields (name, type, role) or lack the Int field materialId.
-ParticleSet mergePorousSets(const ParticleSystem& particles);
+/// What porous.vtp holds: every porous set of `particles` in ParticleSystem order, named "porous" (kind Porous),
+/// with every field of role Output or Restart, sorted by name; Scratch fields are left out. The sets are
+/// referred to, not copied. Throws std::logic_error when the porous sets do not have the same Output/Restart
+/// fields (name, type, role) or lack the Int field materialId.
+ParticleFile porousFile(const ParticleSystem& particles);
 
 /// Splits a set read from `file` (porous.vtp) by its Int field materialId into one set per material, named
 /// materials[id].name, kind Porous, appended to `into` in material order; materials without particles get

@@ -65,19 +65,19 @@ std::string formatExact(double value) {
   return buffer;
 }
 
-/// The files a time directory gets, in ParticleSystem order: (part name = file stem, set). Porous sets
-/// share one file, so their entry is the merged set, owned by `merged`.
-std::vector<std::pair<std::string, const ParticleSet*>> filesOf(const ParticleSystem& particles, bool withBoundaries,
-                                                                std::unique_ptr<ParticleSet>& merged) {
-  std::vector<std::pair<std::string, const ParticleSet*>> files;
+/// The files a time directory gets, in ParticleSystem order: (part name = file stem, contents). Porous sets
+/// share one file.
+std::vector<std::pair<std::string, ParticleFile>> filesOf(const ParticleSystem& particles, bool withBoundaries) {
+  std::vector<std::pair<std::string, ParticleFile>> files;
+  bool porousListed = false;
   for (std::size_t s = 0; s < particles.size(); ++s) {
     const ParticleSet& set = particles[s];
     if (set.kind() == SetKind::Boundary && !withBoundaries && set.name() != kRigidSetName) continue;
     if (set.kind() != SetKind::Porous) {
-      files.emplace_back(set.name(), &set);
-    } else if (!merged) {
-      merged = std::make_unique<ParticleSet>(mergePorousSets(particles));
-      files.emplace_back(kPorousSetName, merged.get());
+      files.emplace_back(set.name(), particleFileOf(set));
+    } else if (!porousListed) {
+      porousListed = true;
+      files.emplace_back(kPorousSetName, porousFile(particles));
     }
   }
   return files;
@@ -86,10 +86,9 @@ std::vector<std::pair<std::string, const ParticleSet*>> filesOf(const ParticleSy
 /// Writes the particle files into `dir` and returns their part names (case.pvd), in ParticleSystem order.
 std::vector<std::string> writeSets(const fs::path& dir, const ParticleSystem& particles, bool withBoundaries,
                                    bool binary) {
-  std::unique_ptr<ParticleSet> merged;
   std::vector<std::string> parts;
-  for (const auto& [part, set] : filesOf(particles, withBoundaries, merged)) {
-    writeParticleSet(*set, dir / (part + ".vtp"), binary);
+  for (const auto& [part, contents] : filesOf(particles, withBoundaries)) {
+    writeParticleFile(contents, dir / (part + ".vtp"), binary);
     parts.push_back(part);
   }
   fs::create_directories(dir / "uniform");

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <optional>
 #include <random>
 #include <stdexcept>
 
@@ -145,21 +146,38 @@ TEST_P(PorousRoundTrip, WriteAllThenReadGivesTheSameSetsBitForBit) {
   EXPECT_EQ(read.find("a")->info(field::materialId)->role, Restart);
 }
 
+TEST_P(PorousRoundTrip, OnePorousSetIsWrittenFromItsOwnStorageAndReadsBackBitForBit) {
+  ScratchDirectory dir;
+  std::mt19937_64 random(17);
+  std::int64_t nextId = 0;
+  ParticleSystem written(kRadius);
+  fillRandomly(written.add("fluid", SetKind::Fluid), 4, nextId, random);
+  addPorousSet(written, "b", 1, 6, nextId, random); // material 1 of two, as a case with one material in use
+  TimeWriter::writeAll(dir.path(), written, RunState{}, GetParam());
+
+  const ParticleSystem read = readParticles(dir.path(), "0", kRadius, materials({"a", "b"}));
+  ASSERT_EQ(read.size(), written.size());
+  for (std::size_t s = 0; s < written.size(); ++s) expectSameSet(written[s], read[s]);
+}
+
 INSTANTIATE_TEST_SUITE_P(Formats, PorousRoundTrip, ::testing::Values(true, false),
                          [](const auto& info) { return info.param ? "binary" : "ascii"; });
 
-TEST(PorousSets, MergeConcatenatesInSystemOrderWithoutScratchFields) {
+TEST(PorousSets, PorousFileListsTheSetsInSystemOrderWithoutScratchFields) {
   std::mt19937_64 random(1);
   const ParticleSystem ps = makeSystem(random);
-  const ParticleSet merged = mergePorousSets(ps);
-  EXPECT_EQ(merged.name(), "porous");
-  EXPECT_EQ(merged.kind(), SetKind::Porous);
-  ASSERT_EQ(merged.size(), 8u);
-  EXPECT_FALSE(merged.has("scratch"));
-  EXPECT_EQ(merged.info(field::saturation)->role, Output);
-  EXPECT_EQ(merged.info("R")->role, Restart);
-  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(merged.vec3(field::x)[i], ps[1].x()[i]);
-  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(merged.mat3("R")[3 + i], ps[2].mat3("R")[i]);
+  const ParticleFile file = porousFile(ps);
+  EXPECT_EQ(file.name, "porous");
+  EXPECT_EQ(file.kind, SetKind::Porous);
+  EXPECT_EQ(file.parts, (std::vector<const ParticleSet*>{&ps[1], &ps[2]}));
+  const auto role = [&](const std::string& name) {
+    for (const auto& f : file.fields)
+      if (f.name == name) return std::optional<FieldRole>(f.role);
+    return std::optional<FieldRole>();
+  };
+  EXPECT_FALSE(role("scratch"));
+  EXPECT_EQ(role(field::saturation), Output);
+  EXPECT_EQ(role("R"), Restart);
 }
 
 TEST(PorousSets, SplitFollowsMaterialOrderAndKeepsFileOrderWithinAMaterial) {
@@ -273,11 +291,11 @@ TEST(PorousSets, OtherParticleFilesAreAnInputError) {
   EXPECT_TRUE(contains(message, "porous.vtp"));
 }
 
-TEST(PorousSets, MergeRejectsSetsWithDifferentFields) {
+TEST(PorousSets, PorousFileRejectsSetsWithDifferentFields) {
   std::mt19937_64 random(13);
   ParticleSystem ps = makeSystem(random);
   ps[2].addReal("extra", Output);
-  EXPECT_THROW(mergePorousSets(ps), std::logic_error);
+  EXPECT_THROW(porousFile(ps), std::logic_error);
 }
 
 } // namespace
