@@ -14,7 +14,7 @@ namespace poro {
 /// Points are field "x" (Float64, not repeated as point data), one vertex cell per particle so ParaView
 /// renders them; Real -> 1-component Float64, Vec3 -> 3 components, Mat3 -> 9 components row-major
 /// (xx xy xz yx ...), Int -> Int64. Field data "setName" and "kind" (string arrays) name the set.
-/// binary=true: appended raw data compressed with zlib, bit-exact on read.
+/// binary=true: appended raw data compressed with zlib (its fastest level), bit-exact on read.
 /// binary=false: ascii, for reading in an editor. VTK 9.1 prints doubles with the shortest digits that
 /// round-trip, so every finite value reads back bit-exact except -0.0, which becomes +0.0. VTK's reader
 /// cannot parse NaN or inf in ascii, so a set holding them is written binary instead (with a warning).
@@ -22,8 +22,8 @@ namespace poro {
 /// half-written file. Throws OutputError naming the file.
 void writeParticleSet(const ParticleSet& set, const std::filesystem::path& file, bool binary);
 
-/// What one file holds when it is not one set: `parts` one after the other (porous.vtp holds every porous set),
-/// named `name` of kind `kind`, with the point arrays `fields`, which every part has.
+/// What one .vtp file holds: `parts` one after the other (one set, or every porous set in porous.vtp), named
+/// `name` of kind `kind`, with the point arrays `fields`, which every part has.
 struct ParticleFile {
   std::string name;
   SetKind kind = SetKind::Fluid;
@@ -34,8 +34,8 @@ struct ParticleFile {
 /// One set's file, as writeParticleSet writes it: its fields of role Output or Restart, in its order.
 ParticleFile particleFileOf(const ParticleSet& set);
 
-/// Writes `contents` as writeParticleSet writes one set. The parts' fields are copied once into the file's
-/// arrays; a file of one part is written from the set's own storage, as writeParticleSet does.
+/// Writes `contents` as writeParticleSet writes one set. The Real and Vec3 fields of a file of one part are
+/// written from the set's own storage; other fields, and those of several parts, are copied once.
 void writeParticleFile(const ParticleFile& contents, const std::filesystem::path& file, bool binary);
 
 /// Reads a .vtp written by writeParticleSet (or any PolyData whose point arrays fit the registry) into

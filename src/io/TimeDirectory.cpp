@@ -18,9 +18,9 @@
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
-#include <memory>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 #include <unistd.h>
 
