@@ -75,12 +75,6 @@ std::string materialNames(const std::vector<PorousMaterial>& materials) {
 
 } // namespace
 
-bool hasPorousSets(const ParticleSystem& particles) {
-  for (std::size_t s = 0; s < particles.size(); ++s)
-    if (particles[s].kind() == SetKind::Porous) return true;
-  return false;
-}
-
 ParticleFile porousFile(const ParticleSystem& particles) {
   ParticleFile file{kPorousSetName, SetKind::Porous, {}, {}};
   for (std::size_t s = 0; s < particles.size(); ++s)

@@ -16,9 +16,6 @@ namespace poro {
 /// Name of the merged set, its file stem (`porous.vtp`) and its case.pvd part.
 inline constexpr const char* kPorousSetName = "porous";
 
-/// True if `particles` holds at least one set of kind Porous.
-bool hasPorousSets(const ParticleSystem& particles);
-
 /// What porous.vtp holds: every porous set of `particles` in ParticleSystem order, named "porous" (kind Porous),
 /// with every field of role Output or Restart, sorted by name; Scratch fields are left out. The sets are
 /// referred to, not copied. Throws std::logic_error when the porous sets do not have the same Output/Restart
