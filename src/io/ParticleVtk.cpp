@@ -111,11 +111,36 @@ vtkSmartPointer<vtkDoubleArray> wrapDoubles(const char* name, const double* valu
   return array;
 }
 
-/// The values of Real or Vec3 field `info` of `set` as a flat array of doubles.
+/// Doubles per particle of a field of `type` (0 for Int).
+int doublesPerParticle(FieldType type) {
+  switch (type) {
+  case FieldType::Real:
+    return 1;
+  case FieldType::Vec3:
+    return 3;
+  case FieldType::Mat3:
+    return 9;
+  case FieldType::Int:
+    return 0;
+  }
+  return 0;
+}
+
+/// The values of Real, Vec3 or Mat3 field `info` of `set` as a flat array of doubles (Mat3 column-major); nullptr
+/// for an Int field or an empty set.
 const double* doublesOf(const ParticleSet& set, const ParticleSet::FieldInfo& info) {
-  if (info.type == FieldType::Real) return set.real(info.name).data();
-  const auto& v = set.vec3(info.name);
-  return v.empty() ? nullptr : v.front().data();
+  if (set.size() == 0) return nullptr;
+  switch (info.type) {
+  case FieldType::Real:
+    return set.real(info.name).data();
+  case FieldType::Vec3:
+    return set.vec3(info.name).front().data();
+  case FieldType::Mat3:
+    return set.mat3(info.name).front().data();
+  case FieldType::Int:
+    return nullptr;
+  }
+  return nullptr;
 }
 
 /// Field `info` of every part, one after the other, as the file's array (`count` tuples in all). A Real or Vec3
@@ -125,7 +150,7 @@ vtkSmartPointer<vtkDataArray> toVtk(const ParticleFile& contents, const Particle
   switch (info.type) {
   case FieldType::Real:
   case FieldType::Vec3: {
-    const int components = info.type == FieldType::Real ? 1 : 3;
+    const int components = doublesPerParticle(info.type);
     if (contents.parts.size() == 1)
       return wrapDoubles(name, doublesOf(*contents.parts.front(), info), count, components);
     auto array = vtkSmartPointer<vtkDoubleArray>::New();
@@ -197,27 +222,13 @@ void presetFiniteNormRange(vtkDoubleArray* array) {
 
 /// Name of the first written field holding NaN or inf, or "".
 std::string firstNonFiniteOutputField(const ParticleFile& contents) {
-  for (const auto& info : contents.fields) {
+  for (const auto& info : contents.fields)
     for (const ParticleSet* part : contents.parts) {
-      std::size_t count = 0;
-      const double* values = nullptr;
-      switch (info.type) {
-      case FieldType::Real:
-      case FieldType::Vec3:
-        count = (info.type == FieldType::Real ? 1 : 3) * part->size();
-        values = doublesOf(*part, info);
-        break;
-      case FieldType::Mat3:
-        count = 9 * part->size();
-        values = count ? part->mat3(info.name).front().data() : nullptr;
-        break;
-      case FieldType::Int:
-        break;
-      }
+      const double* values = doublesOf(*part, info);
+      const std::size_t count = doublesPerParticle(info.type) * part->size();
       for (std::size_t k = 0; k < count; ++k)
         if (!std::isfinite(values[k])) return info.name;
     }
-  }
   return {};
 }
 
