@@ -9,7 +9,6 @@ namespace poro {
 using Real = double;
 using Vec3 = Eigen::Matrix<double, 3, 1, Eigen::DontAlign>;
 using Mat3 = Eigen::Matrix<double, 3, 3, Eigen::DontAlign>;
-using Mat3f = Eigen::Matrix<float, 3, 3, Eigen::DontAlign>; ///< single-precision scratch that hot loops gather
 /// Particle index inside one particle set; 32 bits halve the memory traffic of neighbour lists.
 using Index = std::int32_t;
 

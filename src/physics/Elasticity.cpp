@@ -146,13 +146,13 @@ Mat3 Elasticity::strain(std::size_t s, std::size_t i) const {
   return Mat3::Zero();
 }
 
-template <class M> Vec3 Elasticity::force(const Body& body, const std::vector<M>& weighted, std::size_t s) const {
-  // The M_s part of every pair sums to V0_s M_s G0_s. Products in double: a single-precision M is only stored so.
+Vec3 Elasticity::force(const Body& body, const std::vector<Mat3>& weighted, std::size_t s) const {
+  // The M_s part of every pair sums to V0_s M_s G0_s.
   const ElasticRestState& rest = rest_[body.set];
   Vec3 sum = Vec3::Zero();
   for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair)
-    sum += weighted[static_cast<std::size_t>(rest.neighbour(pair))].template cast<double>() * rest.gradient(pair);
-  return weighted[s].template cast<double>() * rest.gradientSum(s) + rest.volume(s) * sum;
+    sum += weighted[static_cast<std::size_t>(rest.neighbour(pair))] * rest.gradient(pair);
+  return weighted[s] * rest.gradientSum(s) + rest.volume(s) * sum;
 }
 
 void Elasticity::addApply(const linalg::BlockVector& u, const linalg::BlockVector& au) const {
@@ -173,7 +173,7 @@ void Elasticity::addApply(const linalg::BlockVector& u, const linalg::BlockVecto
       }
       const Mat3& rl = body.rotatedCorrection[s];
       const Mat3 eps = symmetric(dt * gradient * rl.transpose());
-      body.stress[s] = (rest.volume(s) * (stressOf(eps, body.shear[s], body.volumetric[s]) * rl)).cast<float>();
+      body.stress[s] = rest.volume(s) * (stressOf(eps, body.shear[s], body.volumetric[s]) * rl);
     });
     parallel::forEach(n, [&](std::size_t s) { out[s] -= dt * force(body, body.stress, s); });
   }

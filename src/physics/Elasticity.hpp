@@ -46,9 +46,7 @@ private:
     std::vector<double> volumetric;      ///< k_lambda lambda (or k_lambda with unitLambda) [Pa]
     std::vector<Mat3> rotatedCorrection; ///< R_s L_s
     std::vector<Mat3> rhsStress;         ///< V0_s P_s R_s L_s of the position part (with bloating)
-    /// V0_s P_s R_s L_s of the velocity part (scratch of addApply), in single precision like the pair data: the
-    /// force pass gathers one per rest neighbour, and half the bytes is most of that pass's time.
-    mutable std::vector<Mat3f> stress;
+    mutable std::vector<Mat3> stress;    ///< V0_s P_s R_s L_s of the velocity part (scratch of addApply)
     /// The particles whose stresses the own particles' forces read: in a parallel run the own ones and the ghosts
     /// among their rest neighbours, not the ghosts lent only to complete those ghosts' sums; empty: all.
     std::vector<Index> stressed;
@@ -57,7 +55,7 @@ private:
   void prepareBody(const StepContext& ctx, Body& body);
   /// F_s = V0_s sum_t V0_t (M_s + M_t) gradW(X_s - X_t) for a per-particle field M = P R L, given the volume-weighted
   /// field V0 M: the neighbours' volumes ride with their stresses instead of being read per pair.
-  template <class M> Vec3 force(const Body& body, const std::vector<M>& weighted, std::size_t s) const;
+  Vec3 force(const Body& body, const std::vector<Mat3>& weighted, std::size_t s) const;
 
   const StepContext* ctx_ = nullptr;
   std::vector<ElasticRestState> rest_; ///< by set index; kept across steps, rebuilt when a set is reordered

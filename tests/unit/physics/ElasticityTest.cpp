@@ -261,7 +261,7 @@ TEST_F(ElasticBlock, PairForcesCancel) {
   EXPECT_LT(total.norm(), 1e-12 * scale);
 }
 
-TEST_F(ElasticBlock, OperatorIsSymmetricPositiveDefiniteWithItsDiagonal) {
+TEST_F(ElasticBlock, OperatorIsSymmetricPositiveDefiniteWithExactDiagonal) {
   build(rubber(2.5e5, 0.45), true, true);
   deform([&](const Vec3& p) { return Vec3(rotationAbout(Vec3(1, 1, 0), 0.4) * p); }, rotationAbout(Vec3(1, 1, 0), 0.4));
   begin();
@@ -273,10 +273,7 @@ TEST_F(ElasticBlock, OperatorIsSymmetricPositiveDefiniteWithItsDiagonal) {
   op.apply(view(kU), view(kAu));
   op.apply(view(kW), view(kAw));
   const double wAu = linalg::dot(view(kW), view(kAu)), awU = linalg::dot(view(kAw), view(kU));
-  // The operator's stresses are stored in single precision (2^-24 = 6e-8 of each entry): symmetric to that. A
-  // wrong rotation or correction on one side of a pair breaks it by the term's own size.
-  constexpr double kStressRounding = 1e-6;
-  EXPECT_NEAR(wAu, awU, kStressRounding * std::abs(wAu));
+  EXPECT_NEAR(wAu, awU, 1e-12 * std::abs(wAu));
   EXPECT_GT(linalg::dot(view(kU), view(kAu)), 0.0);
 
   set().addMat3("testD");
@@ -289,8 +286,7 @@ TEST_F(ElasticBlock, OperatorIsSymmetricPositiveDefiniteWithItsDiagonal) {
       u[0].data[i][c] = 1.0;
       op.apply(u, au);
       const Vec3 column = au[0].data[i];
-      // A wrong or missing term of D is off by its own size, 1e-3 of the column and more.
-      EXPECT_LT((column - d[0].data[i].col(c)).norm(), kStressRounding * column.norm()) << "particle " << i;
+      EXPECT_LT((column - d[0].data[i].col(c)).norm(), 1e-12 * column.norm()) << "particle " << i;
       // The elastic part of the diagonal is really there: more than the mass alone.
       EXPECT_GT(d[0].data[i](c, c), set().mass * (1.0 + 1e-3));
     }
