@@ -11,7 +11,8 @@
 #              about 5 minutes a run on 2 cores)
 #   MODES      of: paper reference                                                      (default: both)
 #   THREADS    thread counts, one run each                                              (default: "1 2")
-# environment: STEPS=N runs N steps of every set instead of its row's interval (a quick look).
+# environment: STEPS=N runs N steps of every set instead of its row's interval (a quick look); RUNS=N runs each
+#              row N times and prints the median run (by time-loop seconds) with the fastest and slowest ms/step.
 #
 # The time per step is the time loop's ("ExecutionTime" of the log after the last step: set-up and the one
 # final write excluded); memory is the whole process's peak.
@@ -23,6 +24,7 @@ build="${1:-$repo/build}"
 sets="${2:-seep-r2cm float-r2.5cm climb-r2cm}"
 modes="${3:-paper reference}"
 threads_list="${4:-1 2}"
+runs="${RUNS:-1}"
 
 die() { echo "publishedSets: $*" >&2; exit 1; }
 
@@ -32,6 +34,7 @@ done
 [[ -x /usr/bin/time ]] || die "/usr/bin/time (GNU time, Debian package 'time') is needed for the peak memory"
 for mode in $modes; do [[ "$mode" == paper || "$mode" == reference ]] || die "unknown mode '$mode' (paper, reference)"; done
 for t in $threads_list; do [[ "$t" =~ ^[1-9][0-9]*$ ]] || die "THREADS must be positive integers, got '$t'"; done
+[[ "$runs" =~ ^[1-9][0-9]*$ ]] || die "RUNS must be a positive integer, got '$runs'"
 
 # set -> "tutorial steps": the rows of the issue's table. A set with bench/published/<set>.particleDict
 # uses that instead of the tutorial's.
@@ -80,12 +83,22 @@ for set in $sets; do
   for mode in $modes; do
     sed -i "s/^  preset: .*/  preset: $mode/" "$base/system/solverDict"
     for t in $threads_list; do
-      rm -rf "$base/$end_time" "$base/case.pvd" "$base/postProcessing"
-      log="$base/log.poroSph.$mode.$t"
-      /usr/bin/time -f "%M" -o "$base/rss" "$build/bin/poroSph" -case "$base" -threads "$t" >"$log" 2>&1 ||
-        { tail -n 20 "$log" >&2; die "poroSph failed on $set ($mode, $t threads)"; }
+      seconds=() # "time-loop seconds run" of each run
+      for ((run = 1; run <= runs; ++run)); do
+        rm -rf "$base/$end_time" "$base/case.pvd" "$base/postProcessing"
+        log="$base/log.poroSph.$mode.$t.$run"
+        /usr/bin/time -f "%M" -o "$base/rss.$run" "$build/bin/poroSph" -case "$base" -threads "$t" >"$log" 2>&1 ||
+          { tail -n 20 "$log" >&2; die "poroSph failed on $set ($mode, $t threads)"; }
+        seconds+=("$(awk '/^ExecutionTime = / { s = $3 } END { print s + 0 }' "$log") $run")
+      done
+      # The row is the median run's; with RUNS > 1 its ms/step is followed by the fastest and slowest runs'.
+      sorted="$(printf '%s\n' "${seconds[@]}" | sort -g)"
+      read -r _ run <<<"$(sed -n "$(((runs + 1) / 2))p" <<<"$sorted")"
+      read -r fastest _ <<<"$(head -n 1 <<<"$sorted")"
+      read -r slowest _ <<<"$(tail -n 1 <<<"$sorted")"
+      log="$base/log.poroSph.$mode.$t.$run"
       awk -v set="$set" -v mode="$mode" -v threads="$t" -v fluid="$fluid" -v porous="$porous" -v total="$total" \
-          -v rssKiB="$(cat "$base/rss")" '
+          -v rssKiB="$(cat "$base/rss.$run")" -v runs="$runs" -v fastest="$fastest" -v slowest="$slowest" '
         /^Time = .*\(step [0-9]+\)/ { s = $0; sub(/.*\(step /, "", s); sub(/\).*/, "", s); steps = s + 0 }
         /^pressure: [0-9]+ sweeps/  { sweeps += $2; nPressure++ }
         /^implicit: [0-9]+ CG/      { cg += $2; nImplicit++ }
@@ -96,8 +109,10 @@ for set in $sets; do
         END {
           if (steps == 0 || seconds <= 0) { print "| " set " | " mode " | " threads " | no steps in the log |"; exit 1 }
           ms = 1000.0 * seconds / steps
-          printf "| %s | %s | %d | %d + %d / %d | %.1f | %.2f | %s / %s / %s / %s | %.1f | %.1f | %.0f | %.0f |\n",
-                 set, mode, threads, fluid, porous, total - fluid - porous, ms, 1000.0 * ms / total,
+          msText = sprintf("%.1f", ms)
+          if (runs > 1) msText = msText sprintf(" (%.1f–%.1f)", 1000.0 * fastest / steps, 1000.0 * slowest / steps)
+          printf "| %s | %s | %d | %d + %d / %d | %s | %.2f | %s / %s / %s / %s | %.1f | %.1f | %.0f | %.0f |\n",
+                 set, mode, threads, fluid, porous, total - fluid - porous, msText, 1000.0 * ms / total,
                  share["search"], share["densities"], share["implicit"], share["pressure"],
                  nPressure ? sweeps / nPressure : 0, nImplicit ? cg / nImplicit : 0,
                  rssKiB / 1024.0, rssKiB * 1024.0 / total
