@@ -10,7 +10,7 @@
 #   SETS       of: seep-r2cm float-r2.5cm climb-r2cm seep-r1cm  (default: the first three; seep-r1cm takes
 #              about 5 minutes a run on 2 cores)
 #   MODES      of: paper reference                                                      (default: both)
-#   THREADS    thread counts, one run each                                              (default: "1 2")
+#   THREADS    thread counts, RUNS runs each                                            (default: "1 2")
 # environment: STEPS=N runs N steps of every set instead of its row's interval (a quick look); RUNS=N runs each
 #              row N times and prints the median run (by time-loop seconds) with the fastest and slowest ms/step.
 #
