@@ -24,6 +24,21 @@ constexpr double kCellWidening = 1.0 + 1e-6;
 /// Cells per parallel task.
 constexpr std::size_t kChunk = 4096;
 
+/// Distances within this share of each other are a tie: lattice pairs are equally far apart in exact arithmetic, and
+/// their computed distances differ in the last bits, in an order any change of rounding (a build with fused
+/// multiply-adds) may reverse.
+constexpr double kTie = 1e-9;
+
+/// Whether the pair (a, b) comes before (c, d) in coordinates rounded to nanometres, x before y before z: the pair a
+/// message names among tied ones, whatever the rounding of their distances or positions.
+bool comesFirst(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  auto nm = [](const Vec3& p, const Vec3& q) {
+    return std::array<long long, 6>{std::llround(p.x() * 1e9), std::llround(p.y() * 1e9), std::llround(p.z() * 1e9),
+                                    std::llround(q.x() * 1e9), std::llround(q.y() * 1e9), std::llround(q.z() * 1e9)};
+  };
+  return nm(a, b) < nm(c, d);
+}
+
 std::uint64_t keyOf(std::int64_t ix, std::int64_t iy, std::int64_t iz) {
   return static_cast<std::uint64_t>(ix) | static_cast<std::uint64_t>(iy) << kBits |
          static_cast<std::uint64_t>(iz) << (2 * kBits);
@@ -160,7 +175,10 @@ std::vector<ClosePairs> findClosePairs(const std::vector<LabelledPoints>& points
       if (grid.label(a) > grid.label(b)) std::swap(a, b);
       ClosePairs& pairs = byLabels[{grid.label(a), grid.label(b)}];
       const double d = (grid.x(a) - grid.x(b)).norm();
-      if (pairs.count++ == 0 || d < pairs.closest) {
+      const bool first = pairs.count++ == 0;
+      const bool closer = d < pairs.closest * (1.0 - kTie);
+      const bool tied = !closer && d <= pairs.closest * (1.0 + kTie);
+      if (first || closer || (tied && comesFirst(grid.x(a), grid.x(b), pairs.pointA, pairs.pointB))) {
         pairs.a = grid.label(a);
         pairs.b = grid.label(b);
         pairs.closest = d;

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <random>
@@ -91,6 +92,27 @@ TEST(ClosePairs, EqualsBruteForceOnLatticesThatCoincideOrTouch) {
   ASSERT_EQ(found.size(), 1u); // only the coincident lattices; touching ones are 2r apart
   EXPECT_EQ(found[0].count, 64u);
   EXPECT_EQ(found[0].closest, 0.0);
+}
+
+TEST(ClosePairs, NamesTheFirstOfTiedPairsWhateverTheRoundingOfTheirDistances) {
+  // Two pairs 0.05 apart in exact arithmetic; computed, 0.14 - 0.09 is 0.05000000000000002 and 0.85 - 0.8 is
+  // 0.04999999999999993. The message must not depend on that (a build with fused multiply-adds rounds otherwise):
+  // the pair that comes first in x, y, z is named, in either order of the points.
+  const std::vector<std::vector<bool>> apart = {{false, true}, {true, false}};
+  for (const bool reversed : {false, true}) {
+    std::vector<Vec3> x = {Vec3(0.09, 0, 0), Vec3(0.8, 0, 0), Vec3(0.14, 0, 0), Vec3(0.85, 0, 0)};
+    std::vector<std::int64_t> label = {0, 0, 1, 1};
+    if (reversed) {
+      std::reverse(x.begin(), x.end());
+      std::reverse(label.begin(), label.end());
+    }
+    const std::vector<ClosePairs> found = findClosePairs({{&x, &label}}, 0.1, apart);
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].count, 2u);
+    EXPECT_EQ(found[0].pointA, Vec3(0.09, 0, 0)) << reversed;
+    EXPECT_EQ(found[0].pointB, Vec3(0.14, 0, 0)) << reversed;
+    EXPECT_NEAR(found[0].closest, 0.05, 1e-15);
+  }
 }
 
 TEST(ClosePairs, FarApartPointsGrowTheCellsInsteadOfTheGrid) {
