@@ -197,6 +197,7 @@ TEST_F(HydrostaticTank, BottomForceEqualsWeight) {
     weightSum += static_cast<double>(fluid.size()) * mass * kGravity;
   }
   EXPECT_NEAR(-forceSum / weightSum, 1.0, 0.02) << "floor force / weight";
+  RecordProperty("floorForceOverWeight", std::to_string(-forceSum / weightSum));
 }
 
 } // namespace
