@@ -32,10 +32,12 @@ protected:
     runner_ = new CaseRunner("fluid/hydrostaticTank", "HydrostaticTank");
     runner_->setKey("constant/fluidProperties", "viscosity", "5");
     runner_->setKey("system/solverDict", "xsph", "0");
-    // The default solve, which the checks below state: 0.01 %, Chebyshev at 0.9. The tutorial's 0.98 suits its
-    // 0.001 %; at 0.01 % it leaves the layer below the surface at twice rho0 g d (measured: worst layer 1.0 off).
-    runner_->setKey("system/solverDict", "  maxDensityError", "0.01");
-    runner_->setKey("system/solverDict", "  spectralRadius", "0.9");
+    // The tutorial's solve, 0.001 % with Chebyshev at 0.98. At the default 0.01 % the column's compression wanders
+    // within the tolerance from step to step, and so does its floor force: single snapshots read 0.958-1.074 of the
+    // weight, and round-off alone (a build with fused multiply-adds) moved their 0.5 s average from 1.007 to 1.022.
+    // At 0.001 % they read 1.0072-1.0079, either way.
+    runner_->setKey("system/solverDict", "  maxDensityError", std::to_string(kTolerancePercent));
+    runner_->setKey("system/solverDict", "  spectralRadius", "0.98");
     runner_->setKey("system/controlDict", "endTime", "1.5");
     runner_->setKey("system/controlDict", "writeInterval", "0.02"); // 25 snapshots over the last 0.5 s
     ASSERT_EQ(runner_->sample(), 0) << runner_->read("log.sampleParticles");
@@ -53,6 +55,7 @@ protected:
   }
   static CaseRunner* runner_;
   static constexpr double radius_ = 0.01;
+  static constexpr double kTolerancePercent = 0.001; ///< solverDict pressure.maxDensityError
 };
 CaseRunner* HydrostaticTank::runner_ = nullptr;
 
@@ -95,7 +98,7 @@ double surfaceHeight(const ParticleSet& fluid, double radius) {
 
 TEST_F(HydrostaticTank, DensityStaysWithinTolerance) {
   // The solver's own measure (METHOD.md §6.7): the mean compression after each step's pressure solve,
-  // over the last 500 steps, against solverDict maxDensityError = 0.01 %.
+  // over the last 500 steps, against solverDict maxDensityError.
   std::istringstream log(runner_->read("log.poroSph"));
   std::vector<double> errors;
   for (std::string line; std::getline(log, line);) {
@@ -103,7 +106,8 @@ TEST_F(HydrostaticTank, DensityStaysWithinTolerance) {
     if (line.rfind("pressure:", 0) == 0 && at != std::string::npos) errors.push_back(std::stod(line.substr(at + 14)));
   }
   ASSERT_GE(errors.size(), 1500u);
-  for (std::size_t s = errors.size() - 500; s < errors.size(); ++s) ASSERT_LE(errors[s], 0.01) << "step " << s + 1;
+  for (std::size_t s = errors.size() - 500; s < errors.size(); ++s)
+    ASSERT_LE(errors[s], kTolerancePercent) << "step " << s + 1;
   // Recomputed at the written positions: no particle above 1.01 rho0 (VALIDATION.md).
   for (const auto& time : lastTimes(25)) {
     ParticleSystem ps = runner_->particles(time.name, radius_);
