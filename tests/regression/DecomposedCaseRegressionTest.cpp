@@ -6,49 +6,59 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <string>
 
 namespace poro::test {
 namespace {
 
 namespace fs = std::filesystem;
 
-/// Every field of every particle of `a` equals `b`'s for the particle of the same id, to `tolerance` relative to the
-/// larger of the value and 1 (SI units: metres, m/s, pascals).
-void expectSameParticles(const ParticleSet& a, const ParticleSet& b, double tolerance = 0.0) {
-  ASSERT_EQ(a.size(), b.size()) << a.name();
+/// The largest difference between a field of a particle of `a` and the same field of `b`'s particle of the same id,
+/// relative to the larger of the value and 1 (SI units: metres, m/s, pascals), and the field it is in. Particles,
+/// fields and integer fields must match exactly.
+struct Difference {
+  double value = 0.0;
+  std::string field;
+};
+Difference largestDifference(const ParticleSet& a, const ParticleSet& b) {
+  Difference largest;
+  EXPECT_EQ(a.size(), b.size()) << a.name();
+  if (a.size() != b.size()) return {INFINITY, "particle count"};
   const auto& idsB = b.integer(field::id);
   std::vector<std::size_t> slotOf(a.size());
   for (std::size_t i = 0; i < a.size(); ++i) {
     const auto at = std::find(idsB.begin(), idsB.end(), a.integer(field::id)[i]);
-    ASSERT_NE(at, idsB.end()) << a.name() << ": id " << a.integer(field::id)[i] << " missing";
+    EXPECT_NE(at, idsB.end()) << a.name() << ": id " << a.integer(field::id)[i] << " missing";
+    if (at == idsB.end()) return {INFINITY, "id"};
     slotOf[i] = static_cast<std::size_t>(at - idsB.begin());
   }
+  auto note = [&](double difference, double size, const std::string& name) {
+    const double relative = difference / std::max(1.0, size);
+    if (!(relative <= largest.value)) largest = {relative, name}; // NaN counts as the largest
+  };
   for (const ParticleSet::FieldInfo& f : a.fields()) {
-    ASSERT_TRUE(b.has(f.name)) << a.name() << ": field " << f.name;
+    EXPECT_TRUE(b.has(f.name)) << a.name() << ": field " << f.name;
+    if (!b.has(f.name)) return {INFINITY, f.name};
     for (std::size_t i = 0; i < a.size(); ++i) {
       const std::size_t j = slotOf[i];
       switch (f.type) {
-      case FieldType::Real: {
-        const double x = a.real(f.name)[i];
-        ASSERT_LE(std::abs(x - b.real(f.name)[j]), tolerance * std::max(1.0, std::abs(x))) << f.name;
+      case FieldType::Real:
+        note(std::abs(a.real(f.name)[i] - b.real(f.name)[j]), std::abs(a.real(f.name)[i]), f.name);
         break;
-      }
-      case FieldType::Vec3: {
-        const Vec3& x = a.vec3(f.name)[i];
-        ASSERT_LE((x - b.vec3(f.name)[j]).norm(), tolerance * std::max(1.0, x.norm())) << f.name;
+      case FieldType::Vec3:
+        note((a.vec3(f.name)[i] - b.vec3(f.name)[j]).norm(), a.vec3(f.name)[i].norm(), f.name);
         break;
-      }
-      case FieldType::Mat3: {
-        const Mat3& x = a.mat3(f.name)[i];
-        ASSERT_LE((x - b.mat3(f.name)[j]).norm(), tolerance * std::max(1.0, x.norm())) << f.name;
+      case FieldType::Mat3:
+        note((a.mat3(f.name)[i] - b.mat3(f.name)[j]).norm(), a.mat3(f.name)[i].norm(), f.name);
         break;
-      }
       case FieldType::Int:
-        ASSERT_EQ(a.integer(f.name)[i], b.integer(f.name)[j]) << f.name;
+        EXPECT_EQ(a.integer(f.name)[i], b.integer(f.name)[j]) << a.name() << ": " << f.name;
         break;
       }
     }
   }
+  return largest;
 }
 
 class DecomposedCase : public ::testing::Test {
@@ -85,20 +95,31 @@ TEST_F(DecomposedCase, SplitAndMergedBackEveryFieldBitForBitAndTheRunContinues) 
   ASSERT_EQ(runner.run(POROSPH_RECONSTRUCT), 0) << runner.read("log.reconstructPar");
   const ParticleSystem back = particles("0.05");
   ASSERT_EQ(back.size(), at005.size());
-  for (std::size_t s = 0; s < back.size(); ++s) expectSameParticles(at005[s], back[s]);
+  for (std::size_t s = 0; s < back.size(); ++s) {
+    const Difference d = largestDifference(at005[s], back[s]);
+    EXPECT_EQ(d.value, 0.0) << at005[s].name() << ": " << d.field;
+  }
   EXPECT_NE(runner.read("case.pvd").find("0.05/porous.vtp"), std::string::npos);
   EXPECT_EQ(runner.read("0.05/uniform/time"), runner.read("processor0/0.05/uniform/time"));
 
   // The serial run from the merged time: its sums run in another order (by id, then Morton sorted), so it matches
-  // the uninterrupted run to round-off (measured 3e-13 relative after 50 steps), far below the 2r = 3 cm the particles
-  // are apart and the solver's 0.01 % density tolerance.
+  // the uninterrupted run to round-off amplified over 50 steps, most of all in the fluid's pressure: measured 5e-10
+  // relative, and 3e-8 in a build with fused multiply-adds. A state lost or changed on the way moves the run by as
+  // much as a valid solve can differ: stopping the pressure solves at 0.0099 % instead of 0.01 % moved the sponge's
+  // velocity change by 2e-2 relative, and a fluid particle's pressure by 2.9 kPa. The bound lies between, 30 times
+  // above the round-off and four orders of magnitude below that.
   runner.setKey("system/controlDict", "startFrom", "latestTime");
   fs::remove(runner.dir() / "log.poroSph");
   ASSERT_EQ(runner.solve(), 0) << runner.read("log.poroSph");
   EXPECT_NE(runner.read("log.poroSph").find("Starting from time 0.05"), std::string::npos);
   const ParticleSystem continued = particles("0.1");
-  expectSameParticles(*at01.find("fluid"), *continued.find("fluid"), 1e-9);
-  expectSameParticles(*at01.find("sponge"), *continued.find("sponge"), 1e-9);
+  for (const char* set : {"fluid", "sponge"}) {
+    const Difference d = largestDifference(*at01.find(set), *continued.find(set));
+    EXPECT_LE(d.value, 1e-6) << set << ": " << d.field;
+    std::ostringstream largest;
+    largest << d.value << " in " << d.field;
+    RecordProperty(std::string("largestRelativeDifferenceOf_") + set, largest.str());
+  }
 }
 
 TEST_F(DecomposedCase, SampledParticlesComeBackByteForByte) {
