@@ -1,6 +1,7 @@
 #include "ParallelRun.hpp"
 
 #include "ControlDictChange.hpp"
+#include "core/BuildInfo.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "core/Parallel.hpp"
@@ -90,7 +91,7 @@ int runRank(const Arguments& args, const Communicator& comm) {
   Solver solver(std::move(simulation.particles), simulation.fluid, std::move(simulation.materials), simulation.solver,
                 simulation.control, simulation.start, std::move(simulation.wallMotions),
                 std::move(simulation.rigidBodies), &ghosts);
-  log::info("Threads per rank: " + std::to_string(parallel::threads()));
+  log::info("Threads per rank: " + std::to_string(parallel::threads()) + "\nBuild: " + buildDescription());
   solver.checkStart();
   if (const char* step = std::getenv("POROSPH_INJECT_NAN_STEP"); step && comm.rank() == 0) // tests the health checks
     solver.injectNaN(std::atoll(step));

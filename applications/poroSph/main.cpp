@@ -3,6 +3,7 @@
 #include "ControlDictChange.hpp"
 #include "ParallelRun.hpp"
 #include "core/Arguments.hpp"
+#include "core/BuildInfo.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "core/Memory.hpp"
@@ -49,7 +50,7 @@ int main(int argc, char* argv[]) try {
   Solver solver(std::move(simulation.particles), simulation.fluid, std::move(simulation.materials), simulation.solver,
                 simulation.control, simulation.start, std::move(simulation.wallMotions),
                 std::move(simulation.rigidBodies));
-  log::info("Threads: " + std::to_string(parallel::threads()));
+  log::info("Threads: " + std::to_string(parallel::threads()) + "\nBuild: " + buildDescription());
   solver.checkStart(); // a refused start leaves case.pvd and postProcessing as they were
   TimeWriter writer(args.caseDir(), simulation.output, simulation.startName);
   writer.setMovingWalls(movingWalls);

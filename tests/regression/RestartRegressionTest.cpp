@@ -2,6 +2,7 @@
 // (METHOD.md §7), whatever the thread count (METHOD.md §1).
 
 #include "CaseRunner.hpp"
+#include "core/BuildInfo.hpp"
 #include "physics/FieldNames.hpp"
 
 #include <algorithm>
@@ -45,6 +46,8 @@ TEST(Restart, StoppedAndRestartedRunMatchesUninterruptedRun) {
   std::filesystem::remove(split.dir() / "log.poroSph");
   ASSERT_EQ(split.solve("-threads 1"), 0) << split.read("log.poroSph"); // also: thread count does not matter
   EXPECT_NE(split.read("log.poroSph").find("Starting from time 0.05"), std::string::npos);
+  // Bit for bit holds for one binary: the log names the build it ran (compiler, instruction set, fused multiply-adds).
+  EXPECT_NE(split.read("log.poroSph").find("\nBuild: " + buildDescription() + "\n"), std::string::npos);
 
   const ParticleSystem a = straight.particles("0.1", 0.005);
   const ParticleSystem b = split.particles("0.1", 0.005);
