@@ -17,19 +17,21 @@ std::string buildDescription() {
 #if defined(__SANITIZE_ADDRESS__)
   text += ", AddressSanitizer";
 #endif
+#if defined(__x86_64__)
 #if defined(__AVX512F__)
   text += ", AVX-512";
 #elif defined(__AVX2__)
   text += ", AVX2";
-#elif defined(__x86_64__)
+#else
   text += ", generic x86-64";
 #endif
-  // GCC and Clang form fused multiply-adds wherever the instruction set has them, unless told otherwise (CMake's
-  // POROSPH_FMA=OFF passes -mno-fma).
+  // GCC and Clang form fused multiply-adds wherever the instruction set has them; CMake's POROSPH_FMA=OFF passes
+  // -mno-fma, which removes them from the set. (Elsewhere the macros do not tell whether contraction is on.)
 #if defined(__FMA__)
   text += ", fused multiply-adds";
 #else
   text += ", no fused multiply-adds";
+#endif
 #endif
   return text;
 }

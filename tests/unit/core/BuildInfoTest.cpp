@@ -15,13 +15,13 @@ TEST(BuildInfo, NamesTheCompilerAndWhetherFusedMultiplyAddsAreUsed) {
   EXPECT_EQ(text.rfind(std::string("GCC ") + __VERSION__, 0), 0u) << text;
 #endif
   // This test is compiled with the project's flags, like the library: both see the same instruction set.
-#if defined(__FMA__)
+#if defined(__x86_64__) && defined(__FMA__)
   EXPECT_NE(text.find(", fused multiply-adds"), std::string::npos) << text;
   EXPECT_EQ(text.find("no fused multiply-adds"), std::string::npos) << text;
-#else
+#elif defined(__x86_64__)
   EXPECT_NE(text.find(", no fused multiply-adds"), std::string::npos) << text;
 #endif
-#if defined(__AVX2__) && !defined(__AVX512F__)
+#if defined(__x86_64__) && defined(__AVX2__) && !defined(__AVX512F__)
   EXPECT_NE(text.find(", AVX2"), std::string::npos) << text;
 #endif
 }
