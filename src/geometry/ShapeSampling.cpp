@@ -60,15 +60,17 @@ std::vector<Vec3> sampleRows(const ClosedShape& shape, const BoxLattice& lattice
   // its own (an allocation inside the loop body, which this pre-processing step affords).
   std::vector<std::vector<Vec3>> blocks(tasks);
   parallel::forEachTask(tasks, [&](std::size_t task) {
-    RowCrossings row; // reused by the task's rows
+    RowCrossings row;         // reused by the task's rows
+    std::vector<Vec3> points; // moved in at the end: neighbouring vectors' headers share a cache line
     for (std::size_t r = task * kRowsPerTask; r < std::min(rows, (task + 1) * kRowsPerTask); ++r) {
       const double y = lattice.coordinate(1, lattice.first + static_cast<long long>(r % ny));
       const double z = lattice.coordinate(2, lattice.first + static_cast<long long>(r / ny));
       row.clear();
       shape.crossRow(y, z, tolerance, row);
       RowCursor cursor(row);
-      classify(y, z, cursor, blocks[task]);
+      classify(y, z, cursor, points);
     }
+    blocks[task] = std::move(points);
   });
   std::size_t total = 0;
   for (const auto& block : blocks) total += block.size();
