@@ -149,9 +149,28 @@ void BM_SearchFluidBoundary(benchmark::State& state) { runSearch(state, false, t
 /// Both lists in one update, as Solver::searchNeighbours requests them.
 void BM_SearchStep(benchmark::State& state) { runSearch(state, true, true); }
 
+/// The default skin (0.1 H) in a step of particles at rest: `gridSearch` 1 runs the grid search at 1.1 H (its lists in
+/// ascending order) and the filtering to H in every update, 0 the filtering alone, as in the steps between.
+void BM_SearchSkin(benchmark::State& state) {
+  parallel::setThreads(static_cast<int>(state.range(0)));
+  const bool gridSearch = state.range(1) != 0;
+  const SearchScene& scene = searchScene();
+  const std::vector<const std::vector<Vec3>*> positions{&scene.fluid, &scene.boundary};
+  const std::vector<std::vector<bool>> wanted{{true, true}, {false, false}};
+  NeighbourSearch search(4.0 * kRadius, 0.4 * kRadius);
+  search.update(positions, wanted);
+  for (auto _ : state) {
+    if (gridSearch) search.invalidate();
+    search.update(positions, wanted);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(scene.fluid.size()));
+}
+
 BENCHMARK(BM_SearchFluidFluid)->Apply(threadCounts);
 BENCHMARK(BM_SearchFluidBoundary)->Apply(threadCounts);
 BENCHMARK(BM_SearchStep)->Apply(threadCounts);
+BENCHMARK(BM_SearchSkin)->ArgNames({"threads", "gridSearch"})->ArgsProduct({{1, 2}, {0, 1}})->Apply(timing);
 
 // ---------------------------------------------------------------------------------------------------------
 // Densities and the pressure solve
