@@ -94,7 +94,7 @@ void NeighbourSearch::assemble(std::size_t n, NeighbourList& list, const AppendN
   std::vector<std::uint32_t> counts(n, 0);
   parallel::forEachTask(chunks, [&](std::size_t chunk) {
     // Filled in a buffer of the task's own and moved in at the end: the headers of neighbouring chunks' buffers
-    // share cache lines, and every append writing them from two threads made the search scale 0.72 on 2.
+    // share cache lines, which every append wrote from both threads (Climb's search phase 1.10 -> 1.06 s).
     IndexBuffer out;
     out.reserve(kChunk * 40);
     const std::size_t end = std::min(n, (chunk + 1) * kChunk);
