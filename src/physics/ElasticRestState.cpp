@@ -77,6 +77,18 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
     correction_[s] = inverts_[s] ? Mat3(moment.inverse()) : Mat3::Identity();
     gradientSum_[s] = sum;
   });
+  neighbourMoment_.resize(n); // every L is known now
+  parallel::forEach(n, [&](std::size_t s) {
+    Mat3 moment = Mat3::Zero();
+    for (std::size_t pair = begin(s); pair < end(s); ++pair) {
+      const std::size_t t = static_cast<std::size_t>(neighbours_[pair]);
+      const Vec3 g = correction_[t] * gradient(pair);
+      moment += volume_[t] * g * g.transpose();
+    }
+    neighbourMoment_[s] = {static_cast<float>(moment(0, 0)), static_cast<float>(moment(1, 1)),
+                           static_cast<float>(moment(2, 2)), static_cast<float>(moment(0, 1)),
+                           static_cast<float>(moment(0, 2)), static_cast<float>(moment(1, 2))};
+  });
 }
 
 } // namespace poro

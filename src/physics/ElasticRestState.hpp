@@ -4,7 +4,8 @@
 ///   V0_s = 1/(W(0) + sum_{t in N0(s)} W(X_s - X_t))                 (Shepard rest volume);
 ///   L_s = (sum_{t in N0(s)} V0_t gradW(X_s - X_t) (x) (X_t - X_s))^-1 (kernel-gradient correction, I if
 ///         |det| <= 1e-9);
-///   G0_s = sum_{t in N0(s)} V0_t gradW(X_s - X_t).
+///   G0_s = sum_{t in N0(s)} V0_t gradW(X_s - X_t);
+///   S_s = sum_{t in N0(s)} V0_t (L_t gradW(X_s - X_t)) (x) (L_t gradW(X_s - X_t)).
 /// Every term uses the rest gradients weighted by the neighbour's rest volume; L_s and G0_s are formed from
 /// the stored (rounded) gradients, so L_s inverts exactly the moment the terms sum.
 /// Everything is a function of X, ids and object ids, summed in persistent-id order, so a rebuild after a
@@ -44,6 +45,14 @@ public:
   /// True where L_s is the inverse of the rest moment (false where it fell back to I).
   bool inverts(std::size_t s) const { return inverts_[s] != 0; }
   const Vec3& gradientSum(std::size_t s) const { return gradientSum_[s]; }
+  /// S_s = sum_{t in N0(s)} V0_t (L_t gradW)(L_t gradW)^T at rest, in single precision: the neighbours' share of
+  /// the implicit solve's preconditioner (Elasticity::addDiagonal), which needs no more.
+  Mat3 neighbourMoment(std::size_t s) const {
+    const SymmetricBlock& m = neighbourMoment_[s];
+    Mat3 result;
+    result << m.xx, m.xy, m.xz, m.xy, m.yy, m.yz, m.xz, m.yz, m.zz;
+    return result;
+  }
 
 private:
   void build(const ParticleSet& set, const CubicKernel& kernel);
@@ -62,6 +71,10 @@ private:
   std::vector<Mat3> correction_;
   std::vector<char> inverts_;
   std::vector<Vec3> gradientSum_;
+  struct SymmetricBlock {
+    float xx, yy, zz, xy, xz, yz;
+  };
+  std::vector<SymmetricBlock> neighbourMoment_;
 };
 
 } // namespace poro
