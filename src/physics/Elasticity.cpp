@@ -12,7 +12,8 @@ namespace {
 constexpr double kLameFloor = 1e-3; // METHOD.md §8: softening factors stay positive
 /// Where the neighbours' elastic blocks weigh at most this times a particle's mass (soft bodies: 0.03-0.33 on the
 /// published sets), the preconditioner forms them from the rest moment; where they outweigh it (the fusilli:
-/// 300-1,200), their rotations steer the CG, and they are summed pair by pair.
+/// 300-1,200), their rotations steer the CG, and they are summed pair by pair, as they are where the material
+/// softens with saturation (the neighbours' moduli then differ).
 constexpr double kNeighbourShareFromRest = 1.0;
 
 bool isElastic(const PorousMaterial* material) { return material && material->youngsModulus > 0.0; }
@@ -105,6 +106,7 @@ void Elasticity::prepareBody(const StepContext& ctx, Body& body) {
   const double lambda = material.lameLambda();
   const double volumetricModulus = ctx.compatibility.unitLambdaVolumetricStress ? 1.0 : lambda;
   const double bloating = material.bloating * (ctx.compatibility.lambdaScaledBloating ? lambda : 1.0);
+  body.uniformModuli = material.shearSoftening == 0.0 && material.volumeSoftening == 0.0;
 
   body.shear.resize(n);
   body.volumetric.resize(n);
@@ -198,10 +200,10 @@ void Elasticity::addDiagonal(const linalg::BlockDiagonal& d) const {
       const double share =
           dt2 * v0 * v0 * (2.0 * body.shear[s] + body.volumetric[s]) * moment.trace() / mass;
       Mat3 neighbours;
-      if (share <= kNeighbourShareFromRest) {
-        // With the neighbours' rotations and moduli taken as s's own: B is rotation-covariant, B(R g) = R B(g) R^T,
-        // so the sum is k_mu mu tr(S_s) I + (k_mu mu + k_lambda lambda) R_s S_s R_s^T, S_s fixed at rest. Exact for a
-        // body that turns as a whole at uniform saturation; elsewhere off by 4 sin(delta / 2) share m at most for
+      if (body.uniformModuli && share <= kNeighbourShareFromRest) {
+        // With the neighbours' rotations taken as s's own (their moduli are s's: the material does not soften): B is
+        // rotation-covariant, B(R g) = R B(g) R^T, so the sum is mu tr(S_s) I + (mu + lambda) R_s S_s R_s^T, S_s fixed
+        // at rest. Exact for a body that turns as a whole; elsewhere off by 4 sin(delta / 2) share m at most for
         // neighbours turned by delta against s, which the mass outweighs: the CG reaches the same tolerance.
         const Mat3& r = rotation[s];
         neighbours = (body.shear[s] + body.volumetric[s]) * (r * moment * r.transpose());

@@ -44,6 +44,7 @@ private:
     std::size_t set = 0, part = 0;
     std::vector<double> shear;           ///< k_mu mu [Pa]
     std::vector<double> volumetric;      ///< k_lambda lambda (or k_lambda with unitLambda) [Pa]
+    bool uniformModuli = true;           ///< no saturation softening: every particle has the material's moduli
     std::vector<Mat3> rotatedCorrection; ///< R_s L_s
     std::vector<Mat3> rhsStress;         ///< V0_s P_s R_s L_s of the position part (with bloating)
     mutable std::vector<Mat3> stress;    ///< V0_s P_s R_s L_s of the velocity part (scratch of addApply)
