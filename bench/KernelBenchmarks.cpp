@@ -104,11 +104,12 @@ void threadCounts(benchmark::internal::Benchmark* b) {
 // ---------------------------------------------------------------------------------------------------------
 // Neighbour search
 
-/// Positions of both sets in Morton order (the Solver sorts walls once and fluid every sortInterval steps).
+/// Positions of both sets in Morton order (the Solver sorts walls once and fluid every sortInterval steps), of the
+/// cells of its search with the default skin.
 struct SearchScene {
   std::vector<Vec3> fluid, boundary;
   SearchScene() {
-    const NeighbourSearch search(4.0 * kRadius);
+    const NeighbourSearch search(4.0 * kRadius, 0.4 * kRadius);
     auto sorted = [&](const std::vector<Vec3>& x) {
       const std::vector<Index> order = search.mortonOrder(x);
       std::vector<Vec3> out(x.size());

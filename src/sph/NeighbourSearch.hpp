@@ -60,7 +60,8 @@ public:
   /// The list of set a against set b (empty if it was not requested).
   const NeighbourList& list(std::size_t a, std::size_t b) const { return lists_[a * sets_ + b]; }
 
-  /// Permutation that puts the particles into Morton (Z-curve) order of their cells; stable for ties.
+  /// Permutation that puts the particles into Morton (Z-curve) order of the grid search's cells (H + skin);
+  /// stable for ties.
   std::vector<Index> mortonOrder(const std::vector<Vec3>& x) const;
 
   double supportRadius() const { return h_; }
@@ -118,9 +119,13 @@ private:
   /// grid search, and (withMovers) b's movers; `self` (skipped) is p's index when p is of set b, else -1.
   void searchAround(const std::vector<const std::vector<Vec3>*>& positions, std::size_t b, const Vec3& p,
                     std::int64_t self, bool withMovers, IndexBuffer& out) const;
+  /// Positions in the order of a CellSort, one array per coordinate: the grid search's distance tests vectorise.
+  struct SortedCoordinates {
+    std::vector<double> x, y, z;
+  };
   /// Sorts positions xs (all inside `grid`) by cell; `inOrder` (if given) gets them in that order.
   static void sortIntoCells(const std::vector<Vec3>& xs, const CellGrid& grid, CellSort& cells,
-                            std::vector<Vec3>* inOrder);
+                            SortedCoordinates* inOrder);
   /// Particles of set a that get lists in this update.
   std::size_t listedOf(std::size_t a, std::size_t size) const {
     return a < listed_.size() ? std::min(listed_[a], size) : size;

@@ -123,6 +123,19 @@ TEST(NeighbourSearch, RandomPointsOneSet) {
   checkAgainstBruteForce({&x}, {{true}}, h);
 }
 
+// A dense clump: rows of the grid search hold hundreds of candidates, so the distance tests run in several
+// blocks of 64 (and remainders that are not whole vectors of four), with and without the skin.
+TEST(NeighbourSearch, DenseClumpEqualsBruteForce) {
+  const double h = 0.04;
+  Positions clump = randomPoints(2500, Vec3::Zero(), Vec3(0.1, 0.05, 0.05), 21);
+  const Positions sparse = randomPoints(300, Vec3(-0.1, -0.1, -0.1), Vec3(0.2, 0.15, 0.15), 22);
+  checkAgainstBruteForce({&clump, &sparse}, {{true, true}, {true, true}}, h);
+  NeighbourSearch search(h, 0.1 * h);
+  search.update({&clump, &sparse}, {{true, true}, {true, true}});
+  expectSameSets(toLists(search.list(0, 0)), bruteForce(clump, clump, h, true), "skin, clump->clump");
+  expectSameSets(toLists(search.list(1, 0)), bruteForce(sparse, clump, h, false), "skin, sparse->clump");
+}
+
 TEST(NeighbourSearch, PairsAtExactlyHAreExcluded) {
   // Dyadic coordinates and H = 1/4: every difference and squared distance is exact, so pairs at exactly H
   // are exactly H apart and must be missing, while pairs a hair closer are present.
@@ -282,6 +295,32 @@ TEST(NeighbourSearch, MortonOrderIsAPermutationGroupingCells) {
   }
   ASSERT_EQ(seen.size(), 8u);
   for (int n = 0; n < 8; ++n) EXPECT_EQ(seen[static_cast<std::size_t>(n)], zOrder[n]) << n;
+}
+
+// With a skin the Morton order groups the grid search's cells, H + skin wide on multiples of their width
+// (the lower corner of the particles need not be on one): each cell of the grid search is then a run of
+// consecutive indices, and its candidates come out as a few ascending runs.
+TEST(NeighbourSearch, MortonOrderWithASkinGroupsTheGridSearchsCells) {
+  const double h = 0.04;
+  const double skin = 0.1 * h;
+  const double cell = h + skin; // the grid's widening (1e-6) is far below the jitter's margin
+  std::mt19937_64 rng(16);
+  std::uniform_int_distribution<int> index(0, 7);
+  std::uniform_real_distribution<double> jitter(0.1 * cell, 0.9 * cell);
+  Positions x(3000);
+  for (auto& p : x)
+    p = Vec3((index(rng) + 3) * cell + jitter(rng), (index(rng) - 5) * cell + jitter(rng), index(rng) * cell + jitter(rng));
+  const std::vector<Index> order = NeighbourSearch(h, skin).mortonOrder(x);
+  std::map<std::array<long long, 3>, std::size_t> lastSeen; // cell -> position in the order
+  for (std::size_t n = 0; n < order.size(); ++n) {
+    const auto c = cellOf(x[static_cast<std::size_t>(order[n])], Vec3::Zero(), cell);
+    const auto it = lastSeen.find(c);
+    if (it != lastSeen.end()) {
+      EXPECT_EQ(it->second, n - 1) << "cell split in the Morton order";
+    }
+    lastSeen[c] = n;
+  }
+  EXPECT_GT(lastSeen.size(), 400u); // most of the 512 cells hold particles: the check above had work to do
 }
 
 TEST(NeighbourSearch, PermuteMovesEveryFieldTogether) {
