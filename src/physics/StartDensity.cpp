@@ -82,9 +82,15 @@ std::vector<DensestParticle> densestAtStart(const StepContext& ctx, double limit
   for (std::size_t a : ctx.dynamicSets) {
     const bool fluid = ctx.particles[a].kind() == SetKind::Fluid;
     const std::vector<double> judged = judgedDensities(ctx, a, fluid ? ownBias.get() : nullptr);
+    // Of densities equal to round-off (a lattice's symmetric places), the lowest id: the message then names the
+    // same particle whatever order the sums ran in (the Morton order, FMA or not).
+    const std::vector<std::int64_t>& id = ctx.particles[a].integer(field::id);
     DensestParticle d{a, 0, kNotJudged, 0};
     for (std::size_t i = 0; i < judged.size(); ++i) {
-      if (judged[i] > d.density) d.density = judged[i], d.index = i;
+      if (judged[i] == kNotJudged) continue;
+      const double roundOff = 1e-12 * std::abs(judged[i]);
+      if (judged[i] > d.density + roundOff || (judged[i] >= d.density - roundOff && id[i] < id[d.index]))
+        d.density = judged[i], d.index = i;
       if (judged[i] > limit) ++d.above;
     }
     if (d.density > kNotJudged) result.push_back(d);
