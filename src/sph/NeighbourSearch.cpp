@@ -494,7 +494,7 @@ std::vector<Index> NeighbourSearch::mortonOrder(const std::vector<Vec3>& x) cons
   if (n == 0) return order;
   // The cells of the grid search at H + skin (makeGrid() puts them on multiples of their size): each is then a
   // run of consecutive indices until particles move, and the grid search's candidates come out as a few ascending
-  // runs, which its insertion sort merges fast (build(): 21.7 against 28.9 ms in bench_kernels' BM_SearchSkin).
+  // runs, which its insertion sort merges fast (bench_kernels' BM_SearchSkin: 20.9 against 28.9 ms, bench/README).
   const CellGrid grid = makeGrid({&x}, h_ + skin_);
   auto spread = [](std::uint64_t v) { // 21 bits -> every third bit
     v &= 0x1fffff;
