@@ -8,4 +8,6 @@ void setThreads(int n) { omp_set_num_threads(n < 1 ? 1 : n); }
 
 int threads() { return omp_get_max_threads(); }
 
+int threadIndex() { return omp_get_thread_num(); }
+
 } // namespace poro::parallel

@@ -21,6 +21,40 @@ void forEach(std::size_t n, const Body& body) {
   for (long long i = 0; i < count; ++i) body(static_cast<std::size_t>(i));
 }
 
+/// Index of the calling thread within a parallel region (0 outside one).
+int threadIndex();
+
+/// Calls body(i) for i in [0, n) in parallel, each thread one contiguous range of about equal work, where
+/// workBefore(i) is the work of items [0, i) (nondecreasing in i): for pair loops whose particles have very different
+/// neighbour counts (pore water beside water above the block), which equal halves by count leave one thread waiting
+/// for. The ranges are the same in every pass over the same lists, as static halves are.
+template <class Body, class WorkBefore>
+void forEachBalanced(std::size_t n, const WorkBefore& workBefore, const Body& body) {
+  const double total = static_cast<double>(workBefore(n));
+  const int count = threads();
+  // First item of share k: the least i with workBefore(i) >= k / count of the total.
+  const auto shareStart = [&](int k) -> std::size_t {
+    if (k <= 0) return 0;
+    if (k >= count) return n;
+    const double target = total * k / count;
+    std::size_t low = 0, high = n;
+    while (low < high) {
+      const std::size_t middle = low + (high - low) / 2;
+      if (static_cast<double>(workBefore(middle)) < target)
+        low = middle + 1;
+      else
+        high = middle;
+    }
+    return low;
+  };
+#pragma omp parallel num_threads(count)
+  {
+    const int k = threadIndex();
+    const std::size_t end = shareStart(k + 1);
+    for (std::size_t i = shareStart(k); i < end; ++i) body(i);
+  }
+}
+
 /// Calls body(t) for t in [0, n) handing out one task at a time: for a few large tasks (chunks of
 /// particles) that must spread over all threads.
 template <class Body>

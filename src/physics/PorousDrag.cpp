@@ -59,7 +59,8 @@ void PorousDrag::prepare(const StepContext& ctx) {
       const auto& xSelf = ctx.particles[side.self].x();
       const auto& xOther = ctx.particles[side.other].x();
       memory::resizeForRefill(side.pairCoefficient, list.totalPairs());
-      parallel::forEach(xSelf.size(), [&](std::size_t a) {
+      const auto work = [&](std::size_t a) { return a + list.offset(a); };
+      parallel::forEachBalanced(xSelf.size(), work, [&](std::size_t a) {
         std::size_t q = list.offset(a);
         for (Index bIndex : list.of(a)) {
           const std::size_t b = static_cast<std::size_t>(bIndex);
@@ -84,7 +85,8 @@ void PorousDrag::addApply(const linalg::BlockVector& u, const linalg::BlockVecto
     const Vec3* ua = u[side.part].data;
     const Vec3* ub = u[side.otherPart].data;
     Vec3* out = au[side.part].data;
-    parallel::forEach(u[side.part].size, [&](std::size_t a) {
+    const auto work = [&](std::size_t a) { return a + list.offset(a); };
+    parallel::forEachBalanced(u[side.part].size, work, [&](std::size_t a) {
       Vec3 force = Vec3::Zero();
       std::size_t q = list.offset(a);
       for (Index bIndex : list.of(a)) {
@@ -104,7 +106,8 @@ void PorousDrag::addDiagonal(const linalg::BlockDiagonal& d) const {
     const auto& xa = ctx_->particles[side.self].x();
     const auto& xb = ctx_->particles[side.other].x();
     Mat3* out = d[side.part].data;
-    parallel::forEach(d[side.part].size, [&](std::size_t a) {
+    const auto work = [&](std::size_t a) { return a + list.offset(a); };
+    parallel::forEachBalanced(d[side.part].size, work, [&](std::size_t a) {
       Mat3 block = Mat3::Zero();
       std::size_t q = list.offset(a);
       for (Index bIndex : list.of(a)) {

@@ -68,6 +68,14 @@ std::vector<WallView> wallsOf(const StepContext& ctx, std::size_t a) {
   return walls;
 }
 
+/// Pairs of particles [0, i) with their dynamic partners, plus i: the work before particle i in a sweep's loops.
+std::size_t pairsBefore(const std::vector<PartnerView>& partners, std::size_t i) {
+  std::size_t work = i;
+  for (const PartnerView& p : partners)
+    if (p.list->particles() > 0) work += p.list->offset(i);
+  return work;
+}
+
 /// sum_b f(a<-b) V s_ab (q_b . x_ab) over the dynamic partners of particle i, for a per-particle vector
 /// field q (velocities for Eq. 6, pressure accelerations for the operator).
 double partnerProjection(const std::vector<PartnerView>& partners, const Vec3& xi, std::int64_t objectI, std::size_t i,
@@ -158,7 +166,8 @@ void PressureSolver::computeAccelerations(const StepContext& ctx, const std::vec
                                     return p.coupling.coupling == 0.0 && p.coupling.ownCoupling == 0.0;
                                   }),
                    partners.end());
-    parallel::forEach(ctx.owned(a), [&](std::size_t i) {
+    const auto work = [&](std::size_t i) { return pairsBefore(partners, i); };
+    parallel::forEachBalanced(ctx.owned(a), work, [&](std::size_t i) {
       if (fixed && fixed[i]) {
         accel[i].setZero();
         return;
@@ -205,7 +214,8 @@ std::vector<std::vector<double>> PressureSolver::operatorOfStoredAccelerations(c
     const auto& accel = set.vec3(field::accelP);
     const auto partners = partnersOf(ctx, a);
     std::vector<double> api(set.size());
-    parallel::forEach(set.size(), [&](std::size_t i) {
+    const auto work = [&](std::size_t i) { return pairsBefore(partners, i); };
+    parallel::forEachBalanced(set.size(), work, [&](std::size_t i) {
       const double others = partnerProjection(partners, x[i], object[i], i, false);
       api[i] = ctx.dt * ctx.dt * (accel[i].dot(gradSum[i]) - set.particleVolume * others);
     });
@@ -273,7 +283,8 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
       // (A pi)_a = dt^2 [a_a.G_a - V sum_b f s_ab a_b.x_ab]; r = (1 - rho~*) - (A pi); error max(-r, 0).
       // The sweep in a loop of its own: inside parallel::sum, whose blocks of 4096 are handed out whole, a set of
       // 12,696 particles gave one thread 8,192 and the other 4,504 (the sum below is the same, bit for bit).
-      parallel::forEach(n, [&](std::size_t i) {
+      const auto work = [&](std::size_t i) { return pairsBefore(partners, i); };
+      parallel::forEachBalanced(n, work, [&](std::size_t i) {
         if (fixed && fixed[i]) {
           residual[i] = 0.0;
           return;

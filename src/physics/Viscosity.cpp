@@ -103,7 +103,12 @@ void Viscosity::addApply(const linalg::BlockVector& u, const linalg::BlockVector
     std::vector<const NeighbourList*> walls;
     for (std::size_t w = 0; w < member.wallCoefficient.size(); ++w)
       walls.push_back(&ctx.search.list(member.set, ctx.boundarySets[w]));
-    parallel::forEach(u[member.part].size, [&](std::size_t i) {
+    const auto work = [&](std::size_t i) {
+      std::size_t pairs = i + same.offset(i);
+      for (const NeighbourList* wall : walls) pairs += wall->offset(i);
+      return pairs;
+    };
+    parallel::forEachBalanced(u[member.part].size, work, [&](std::size_t i) {
       Vec3 force = Vec3::Zero();
       std::size_t p = same.offset(i);
       for (Index j : same.of(i)) {
