@@ -8,6 +8,11 @@ namespace poro {
 
 namespace {
 constexpr double kDragFactor = 10.0; // 2(d + 2) for d = 3
+
+/// The work before particle a of a loop over `list` (its pairs, plus a), for parallel::forEachBalanced.
+auto pairsBefore(const NeighbourList& list) {
+  return [&list](std::size_t a) { return a + list.offset(a); };
+}
 } // namespace
 
 double PorousDrag::coefficient(double mu, double massI, double rhoMix, double massT, double rhoT, double distance2,
@@ -59,8 +64,7 @@ void PorousDrag::prepare(const StepContext& ctx) {
       const auto& xSelf = ctx.particles[side.self].x();
       const auto& xOther = ctx.particles[side.other].x();
       memory::resizeForRefill(side.pairCoefficient, list.totalPairs());
-      const auto work = [&](std::size_t a) { return a + list.offset(a); };
-      parallel::forEachBalanced(xSelf.size(), work, [&](std::size_t a) {
+      parallel::forEachBalanced(xSelf.size(), pairsBefore(list), [&](std::size_t a) {
         std::size_t q = list.offset(a);
         for (Index bIndex : list.of(a)) {
           const std::size_t b = static_cast<std::size_t>(bIndex);
@@ -85,8 +89,7 @@ void PorousDrag::addApply(const linalg::BlockVector& u, const linalg::BlockVecto
     const Vec3* ua = u[side.part].data;
     const Vec3* ub = u[side.otherPart].data;
     Vec3* out = au[side.part].data;
-    const auto work = [&](std::size_t a) { return a + list.offset(a); };
-    parallel::forEachBalanced(u[side.part].size, work, [&](std::size_t a) {
+    parallel::forEachBalanced(u[side.part].size, pairsBefore(list), [&](std::size_t a) {
       Vec3 force = Vec3::Zero();
       std::size_t q = list.offset(a);
       for (Index bIndex : list.of(a)) {
@@ -106,8 +109,7 @@ void PorousDrag::addDiagonal(const linalg::BlockDiagonal& d) const {
     const auto& xa = ctx_->particles[side.self].x();
     const auto& xb = ctx_->particles[side.other].x();
     Mat3* out = d[side.part].data;
-    const auto work = [&](std::size_t a) { return a + list.offset(a); };
-    parallel::forEachBalanced(d[side.part].size, work, [&](std::size_t a) {
+    parallel::forEachBalanced(d[side.part].size, pairsBefore(list), [&](std::size_t a) {
       Mat3 block = Mat3::Zero();
       std::size_t q = list.offset(a);
       for (Index bIndex : list.of(a)) {

@@ -31,7 +31,7 @@ std::vector<int> ownersOf(const std::vector<std::size_t>& work, int threads) {
 
 TEST(ForEachBalanced, SplitsByWorkNotByCount) {
   // The first quarter of the items carries three quarters of the work (pore water beside dry fluid above): halves
-  // by count would give one thread 7/8 of it.
+  // by count would give one thread 5/6 of it.
   std::vector<std::size_t> work(4000, 1);
   std::fill(work.begin(), work.begin() + 1000, 9);
   const std::vector<int> owner = ownersOf(work, 2);
