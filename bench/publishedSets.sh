@@ -12,7 +12,8 @@
 #   MODES      of: paper reference                                                      (default: both)
 #   THREADS    thread counts, RUNS runs each                                            (default: "1 2")
 # environment: STEPS=N runs N steps of every set instead of its row's interval (a quick look); RUNS=N runs each
-#              row N times and prints the median run (by time-loop seconds) with the fastest and slowest ms/step.
+#              row N times, the thread counts taking turns, and prints the median run (by time-loop seconds)
+#              with the fastest and slowest ms/step.
 #
 # The time per step is the time loop's ("ExecutionTime" of the log after the last step: set-up and the one
 # final write excluded); memory is the whole process's peak.
@@ -82,23 +83,28 @@ for set in $sets; do
   total="$(sed -n 's/^Wrote .* with \([0-9][0-9]*\) particles.*/\1/p' "$base/log.sampleParticles" | tail -n 1)"
   for mode in $modes; do
     sed -i "s/^  preset: .*/  preset: $mode/" "$base/system/solverDict"
-    for t in $threads_list; do
-      seconds=() # "time-loop seconds run" of each run
-      for ((run = 1; run <= runs; ++run)); do
+    unset seconds
+    declare -A seconds=() # per thread count, a line "time-loop seconds run" for each run
+    # The thread counts take turns (1 2 1 2 ...): the machine's speed drifts over minutes, and runs a minute apart
+    # compare the thread counts more fairly than blocks of runs a row apart.
+    for ((run = 1; run <= runs; ++run)); do
+      for t in $threads_list; do
         rm -rf "$base/$end_time" "$base/case.pvd" "$base/postProcessing"
         log="$base/log.poroSph.$mode.$t.$run"
-        /usr/bin/time -f "%M" -o "$base/rss.$run" "$build/bin/poroSph" -case "$base" -threads "$t" >"$log" 2>&1 ||
+        /usr/bin/time -f "%M" -o "$base/rss.$t.$run" "$build/bin/poroSph" -case "$base" -threads "$t" >"$log" 2>&1 ||
           { tail -n 20 "$log" >&2; die "poroSph failed on $set ($mode, $t threads)"; }
-        seconds+=("$(awk '/^ExecutionTime = / { s = $3 } END { print s + 0 }' "$log") $run")
+        seconds[$t]+="$(awk '/^ExecutionTime = / { s = $3 } END { print s + 0 }' "$log") $run"$'\n'
       done
+    done
+    for t in $threads_list; do
       # The row is the median run's; with RUNS > 1 its ms/step is followed by the fastest and slowest runs'.
-      sorted="$(printf '%s\n' "${seconds[@]}" | sort -g)"
+      sorted="$(printf '%s' "${seconds[$t]}" | sort -g)"
       read -r _ run <<<"$(sed -n "$(((runs + 1) / 2))p" <<<"$sorted")"
       read -r fastest _ <<<"$(head -n 1 <<<"$sorted")"
       read -r slowest _ <<<"$(tail -n 1 <<<"$sorted")"
       log="$base/log.poroSph.$mode.$t.$run"
       awk -v set="$set" -v mode="$mode" -v threads="$t" -v fluid="$fluid" -v porous="$porous" -v total="$total" \
-          -v rssKiB="$(cat "$base/rss.$run")" -v runs="$runs" -v fastest="$fastest" -v slowest="$slowest" '
+          -v rssKiB="$(cat "$base/rss.$t.$run")" -v runs="$runs" -v fastest="$fastest" -v slowest="$slowest" '
         /^Time = .*\(step [0-9]+\)/ { s = $0; sub(/.*\(step /, "", s); sub(/\).*/, "", s); steps = s + 0 }
         /^pressure: [0-9]+ sweeps/  { sweeps += $2; nPressure++ }
         /^implicit: [0-9]+ CG/      { cg += $2; nImplicit++ }
