@@ -22,6 +22,10 @@ namespace {
 constexpr std::int64_t kMaxCells = std::int64_t(1) << 27;
 /// Particles per task of the list build: large enough to amortise, small enough to balance.
 constexpr std::size_t kChunk = 512;
+/// A list is assembled in rounds of at least this many chunks per thread (fewer rounds cost less waiting at their
+/// ends) and at most kRounds rounds (more keep less memory).
+constexpr std::size_t kChunksPerThreadAndRound = 16;
+constexpr std::size_t kRounds = 8;
 /// Cells are a hair wider than H. With cells of exactly H, round-off in (x - origin) * (1/H) can put two
 /// particles whose distance is within an ulp of H into cells two apart (e.g. x = 0.7999999999999999 and
 /// 0.8999999999999999 at H = 0.1 land in cells 7 and 9), and the 27-cell stencil misses the pair. The
@@ -141,34 +145,49 @@ void NeighbourSearch::clearLists(std::vector<NeighbourList>& lists) const {
 template <class AppendNeighbours>
 void NeighbourSearch::assemble(std::size_t n, NeighbourList& list, const AppendNeighbours& append) {
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
-  std::vector<IndexBuffer> chunkIndices(chunks);
-  std::vector<std::uint32_t> counts(n, 0);
-  parallel::forEachTask(chunks, [&](std::size_t chunk) {
-    // Filled in a buffer of the task's own and moved in at the end: the headers of neighbouring chunks' buffers
-    // share cache lines, which every append wrote from both threads (Climb's search phase 1.10 -> 1.06 s).
-    IndexBuffer out;
-    out.reserve(kChunk * 40);
-    const std::size_t end = std::min(n, (chunk + 1) * kChunk);
-    for (std::size_t i = chunk * kChunk; i < end; ++i) {
-      const std::size_t before = out.size();
-      append(i, out);
-      counts[i] = static_cast<std::uint32_t>(out.size() - before);
+  // In rounds of a few chunks per thread: the chunks' buffers then hold one round's pairs beside the list, not a
+  // second copy of all of it (the largest list of the published Seep at r = 1 cm holds 18 MB of indices, and its
+  // copy was the peak of the run's memory). Small lists take one round.
+  const std::size_t perRound =
+      std::max(kChunksPerThreadAndRound * static_cast<std::size_t>(parallel::threads()), (chunks + kRounds - 1) / kRounds);
+  std::vector<IndexBuffer> buffers(std::min(chunks, perRound));
+  list.offsets_.resize(n + 1);
+  list.offsets_[0] = 0;
+  list.indices_.clear(); // the capacity stays: most updates need about what the last one did
+  for (std::size_t first = 0; first < chunks; first += perRound) {
+    const std::size_t last = std::min(chunks, first + perRound);
+    parallel::forEachTask(last - first, [&](std::size_t k) {
+      // Filled in a buffer held by the task itself and put back at the end: the headers of neighbouring chunks'
+      // buffers share cache lines, which every append wrote from both threads (Climb's search phase 1.10 -> 1.06 s).
+      IndexBuffer out = std::move(buffers[k]);
+      out.clear();
+      out.reserve(kChunk * 40);
+      const std::size_t end = std::min(n, (first + k + 1) * kChunk);
+      for (std::size_t i = (first + k) * kChunk; i < end; ++i) {
+        const std::size_t before = out.size();
+        append(i, out);
+        list.offsets_[i + 1] = static_cast<std::uint32_t>(out.size() - before); // a count until the scan below
+      }
+      buffers[k] = std::move(out);
+    });
+    const std::size_t lastParticle = std::min(n, last * kChunk);
+    std::uint64_t pairs = list.offsets_[first * kChunk];
+    for (std::size_t i = first * kChunk; i < lastParticle; ++i) {
+      pairs += list.offsets_[i + 1];
+      if (pairs > std::numeric_limits<std::uint32_t>::max())
+        throw NumericalError("neighbour search: more than " + std::to_string(std::numeric_limits<std::uint32_t>::max()) +
+                             " pairs in one list, more than its 32-bit offsets hold (some hundred million particles "
+                             "in one set); decompose the case (mpirun, -parallel)");
+      list.offsets_[i + 1] = static_cast<std::uint32_t>(pairs);
     }
-    chunkIndices[chunk] = std::move(out);
-  });
-  std::uint64_t pairs = 0;
-  for (const IndexBuffer& out : chunkIndices) pairs += out.size();
-  if (pairs > std::numeric_limits<std::uint32_t>::max())
-    throw NumericalError(
-        "neighbour search: " + std::to_string(pairs) + " pairs in one list, more than the " +
-        std::to_string(std::numeric_limits<std::uint32_t>::max()) +
-        " its 32-bit offsets hold (some hundred million particles in one set); decompose the case (mpirun, -parallel)");
-  parallel::exclusiveScan(counts, list.offsets_);
-  memory::resizeForRefill(list.indices_, static_cast<std::size_t>(list.offsets_[n]));
-  parallel::forEach(chunks, [&](std::size_t chunk) {
-    const auto& src = chunkIndices[chunk];
-    std::copy(src.begin(), src.end(), list.indices_.begin() + list.offsets_[chunk * kChunk]);
-  });
+    if (pairs > list.indices_.capacity()) // grown to what the rounds so far suggest for the whole list
+      list.indices_.reserve(std::max<std::uint64_t>(pairs, pairs * chunks / last) + pairs / 32);
+    list.indices_.resize(pairs);
+    parallel::forEach(last - first, [&](std::size_t k) {
+      const IndexBuffer& src = buffers[k];
+      std::copy(src.begin(), src.end(), list.indices_.begin() + list.offsets_[(first + k) * kChunk]);
+    });
+  }
 }
 
 void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positions,

@@ -123,6 +123,35 @@ TEST(NeighbourSearch, RandomPointsOneSet) {
   checkAgainstBruteForce({&x}, {{true}}, h);
 }
 
+// 20,000 particles are 40 chunks of the list build, assembled in rounds (three with one thread, two with two):
+// each round's pairs must land at the offsets the rounds before it left, with and without the skin.
+TEST(NeighbourSearch, ListsOfManyChunksAreAssembledInRounds) {
+  ThreadGuard guard;
+  const double h = 0.04;
+  const Positions x = randomPoints(20000, Vec3::Zero(), Vec3(0.6, 0.6, 0.6), 5); // about 25 neighbours each
+  std::vector<Lists> byRun;
+  for (int t = 1; t <= 2; ++t)
+    for (const double skin : {0.0, 0.1 * h}) {
+      parallel::setThreads(t);
+      NeighbourSearch search(h, skin);
+      search.update({&x}, {{true}});
+      const Lists found = toLists(search.list(0, 0));
+      ASSERT_EQ(found.size(), x.size());
+      for (std::size_t i = 0; i < x.size(); i += 97) { // a sample, against brute force for that particle
+        Positions one{x[i]};
+        Lists expected = bruteForce(one, x, h, false);
+        expected[0].erase(std::remove(expected[0].begin(), expected[0].end(), static_cast<Index>(i)), expected[0].end());
+        expectSameSets({found[i]}, expected, ("particle " + std::to_string(i)).c_str());
+      }
+      std::size_t pairs = 0;
+      for (const auto& l : found) pairs += l.size();
+      EXPECT_EQ(pairs, search.list(0, 0).totalPairs());
+      byRun.push_back(found);
+    }
+  EXPECT_TRUE(byRun[0] == byRun[2]) << "lists at H differ between 1 and 2 threads";
+  EXPECT_TRUE(byRun[1] == byRun[3]) << "lists with the skin differ between 1 and 2 threads";
+}
+
 // A dense clump: rows of the grid search hold hundreds of candidates, so the distance tests run in several
 // blocks of 64 (and remainders that are not whole vectors of four), with and without the skin.
 TEST(NeighbourSearch, DenseClumpEqualsBruteForce) {
