@@ -7,12 +7,30 @@
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 
 namespace poro {
 
 namespace {
 constexpr double kDeterminantThreshold = 1e-9; // METHOD.md §8: below it L = I
+constexpr std::size_t kDistinctBlock = 4096;   // particles whose distinct rest gradients are gathered together
+
+/// Orders gradients by their bits: equal values are the same bits (-0 and 0 stay apart, as stored).
+template <class G> bool bitsBefore(const G& a, const G& b) {
+  static_assert(sizeof(G) == 3 * sizeof(std::uint32_t));
+  std::array<std::uint32_t, 3> x, y;
+  std::memcpy(x.data(), &a, sizeof(G));
+  std::memcpy(y.data(), &b, sizeof(G));
+  return x < y;
+}
+
+template <class G> void sortUnique(std::vector<G>& values) {
+  std::sort(values.begin(), values.end(), bitsBefore<G>);
+  values.erase(std::unique(values.begin(), values.end(), [](const G& a, const G& b) { return !bitsBefore(a, b); }),
+               values.end());
+}
 } // namespace
 
 bool ElasticRestState::update(const ParticleSet& set, const CubicKernel& kernel) {
@@ -44,7 +62,6 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
   offsets_.assign(n + 1, 0);
   for (std::size_t s = 0; s < n; ++s) offsets_[s + 1] = offsets_[s] + static_cast<std::int64_t>(lists[s].size());
   neighbours_.resize(static_cast<std::size_t>(offsets_[n]));
-  gradients_.resize(neighbours_.size());
   volume_.resize(n);
   shepard_.resize(n);
   correction_.resize(n);
@@ -54,15 +71,14 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
     double shepard = kernel.w0();
     std::size_t pair = begin(s);
     for (Index t : lists[s]) {
-      const Vec3 xst = rest[s] - rest[static_cast<std::size_t>(t)];
-      shepard += kernel.w(xst);
-      const Vec3 g = kernel.grad(xst);
-      neighbours_[pair] = t;
-      gradients_[pair++] = {static_cast<float>(g.x()), static_cast<float>(g.y()), static_cast<float>(g.z())};
+      shepard += kernel.w(rest[s] - rest[static_cast<std::size_t>(t)]);
+      neighbours_[pair++] = t;
     }
     shepard_[s] = shepard;
     volume_[s] = 1.0 / shepard;
   });
+  lists = {};
+  storeGradients(rest, kernel);
   // Every V0 is known now: sum the moments of the weighted gradients exactly as the terms will read them (rounded).
   parallel::forEach(n, [&](std::size_t s) {
     Mat3 moment = Mat3::Zero();
@@ -88,6 +104,56 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
     neighbourMoment_[s] = {static_cast<float>(moment(0, 0)), static_cast<float>(moment(1, 1)),
                            static_cast<float>(moment(2, 2)), static_cast<float>(moment(0, 1)),
                            static_cast<float>(moment(0, 2)), static_cast<float>(moment(1, 2))};
+  });
+}
+
+void ElasticRestState::storeGradients(const std::vector<Vec3>& rest, const CubicKernel& kernel) {
+  const std::size_t n = size();
+  const std::size_t pairs = neighbours_.size();
+  const auto rounded = [&](std::size_t s, std::size_t pair) {
+    const Vec3 g = kernel.grad(rest[s] - rest[static_cast<std::size_t>(neighbours_[pair])]);
+    return PairGradient{static_cast<float>(g.x()), static_cast<float>(g.y()), static_cast<float>(g.z())};
+  };
+  // The distinct values, block by block (a fixed blocking: the outcome does not depend on the thread count), then
+  // merged.
+  constexpr std::size_t kCodes = std::size_t(1) << 16;
+  const std::size_t blocks = (n + kDistinctBlock - 1) / kDistinctBlock;
+  std::vector<std::vector<PairGradient>> distinct(blocks);
+  parallel::forEach(blocks, [&](std::size_t b) {
+    std::vector<PairGradient>& values = distinct[b];
+    for (std::size_t s = b * kDistinctBlock; s < std::min(n, (b + 1) * kDistinctBlock); ++s) {
+      for (std::size_t pair = begin(s); pair < end(s); ++pair) values.push_back(rounded(s, pair));
+      if (values.size() > 4 * kCodes) {
+        sortUnique(values);
+        if (values.size() > kCodes) break; // more than there are codes: the merge below gives up too
+      }
+    }
+    sortUnique(values);
+    values.shrink_to_fit();
+  });
+  std::vector<PairGradient> table;
+  for (std::vector<PairGradient>& values : distinct) {
+    table.insert(table.end(), values.begin(), values.end());
+    values = {};
+    sortUnique(table);
+    if (table.size() > kCodes) break;
+  }
+  if (table.size() > kCodes) { // every pair keeps its own
+    gradientCodes_ = {};
+    gradientTable_.resize(pairs);
+    parallel::forEach(n, [&](std::size_t s) {
+      for (std::size_t pair = begin(s); pair < end(s); ++pair) gradientTable_[pair] = rounded(s, pair);
+    });
+    return;
+  }
+  gradientTable_ = std::move(table);
+  gradientCodes_.resize(pairs);
+  parallel::forEach(n, [&](std::size_t s) {
+    for (std::size_t pair = begin(s); pair < end(s); ++pair) {
+      const PairGradient g = rounded(s, pair);
+      gradientCodes_[pair] = static_cast<std::uint16_t>(
+          std::lower_bound(gradientTable_.begin(), gradientTable_.end(), g, bitsBefore<PairGradient>) - gradientTable_.begin());
+    }
   });
 }
 

@@ -110,6 +110,54 @@ TEST_F(ElasticBlock, CorrectedGradientReproducesIdentityEverywhere) {
   }
 }
 
+// Rounded rest gradients gradW(X_s - X_t), as every elastic term reads them: shared through a table of their
+// distinct values on a lattice (a few dozen: one per offset within H), kept per pair where they are too many;
+// either way the same bits as computed from the rest positions.
+void expectRestGradientsAsComputed(const ElasticRestState& rest, const std::vector<Vec3>& restX,
+                                   const CubicKernel& kernel) {
+  std::size_t wrong = 0;
+  for (std::size_t s = 0; s < rest.size(); ++s)
+    for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
+      const Vec3 g = kernel.grad(restX[s] - restX[static_cast<std::size_t>(rest.neighbour(pair))]);
+      const Vec3 read = rest.gradient(pair);
+      for (int d = 0; d < 3; ++d) wrong += read[d] != static_cast<double>(static_cast<float>(g[d]));
+    }
+  EXPECT_EQ(wrong, 0u);
+}
+
+TEST_F(ElasticBlock, RestGradientsOfALatticeShareTheirDistinctValues) {
+  build(rubber());
+  begin();
+  Elasticity term;
+  term.prepare(*ctx_);
+  const ElasticRestState& rest = term.restState(0);
+  // 26 lattice offsets within H = 2 spacings (|o|^2 = 1, 2, 3 spacings^2); round-off in X_s - X_t may split one
+  // into neighbouring floats (30 values here).
+  EXPECT_GE(rest.sharedGradients(), 26u);
+  EXPECT_LE(rest.sharedGradients(), 4 * 26u);
+  expectRestGradientsAsComputed(rest, set().vec3(field::restPosition), ctx_->kernel);
+}
+
+TEST(ElasticRestState, RestGradientsOfAnIrregularBodyAreKeptPerPairWhenTooManyToShare) {
+  // A jittered 15^3 block: every pair its own value (the two directions of a pair opposite), about 90,000 of
+  // them, more than the 2^16 codes.
+  std::vector<Vec3> x = sampleBox(Vec3::Zero(), Vec3(0.3, 0.3, 0.3), kR);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> d(-0.2 * kR, 0.2 * kR);
+  for (Vec3& p : x) p += Vec3(d(rng), d(rng), d(rng));
+  ParticleSystem ps(kR);
+  addSet(ps, "rubber", SetKind::Porous, x, 0);
+  Solver solver(std::move(ps), weightless(), std::vector<PorousMaterial>{rubber()}, SolverSettings{}, fixedStep(kDt),
+                RunState{});
+  const StepContext ctx = solver.beginStep(kDt);
+  Elasticity term;
+  term.prepare(ctx);
+  const ElasticRestState& rest = term.restState(0);
+  ASSERT_GT(rest.end(rest.size() - 1), std::size_t(1) << 16);
+  EXPECT_EQ(rest.sharedGradients(), 0u);
+  expectRestGradientsAsComputed(rest, solver.particles()[0].vec3(field::restPosition), ctx.kernel);
+}
+
 TEST_F(ElasticBlock, ShepardRestVolumesMatchTheLatticeTable) {
   // V0/V = 1.00003 interior, 1.176 face, 1.390 edge, 1.649 corner (METHOD.md §2.2).
   build(rubber());
