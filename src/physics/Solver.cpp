@@ -425,7 +425,7 @@ void Solver::computeWallVolumesWithGhosts() {
 
 void Solver::searchNeighbours(double deltaT) {
   if (ghosts_) ghosts_->drop(particles_); // e.g. those of checkStart's densities
-  const bool sortNow = settings_.sortInterval > 0 && state_.step % settings_.sortInterval == 0;
+  const bool sortNow = sortsThisStep();
   if (sortNow) {
     for (std::size_t a : dynamicSets_) particles_[a].permute(search_.mortonOrder(particles_[a].x()));
     search_.invalidate();
@@ -459,6 +459,10 @@ void Solver::searchNeighbours(double deltaT) {
   if (ghosts_)
     for (std::size_t s = 0; s < particles_.size(); ++s) listed.push_back(ghosts_->owned(s));
   search_.update(positions, wanted, bulkStep, listed);
+}
+
+bool Solver::sortsThisStep() const {
+  return settings_.sortInterval > 0 && state_.step % settings_.sortInterval == 0;
 }
 
 bool Solver::skinHoldsOnEveryRank() const {
@@ -697,7 +701,7 @@ void Solver::checkHealth(const Writer& write) {
         << report_.deltaT << " s): NaN or infinite position or velocity in "
         << describe(particles_, notFinite,
                     [&](std::size_t s, std::size_t i) {
-                      const auto p = snapshot_.positionOf(s, particles_[s].integer(field::id)[i]);
+                      const auto p = snapshot_.positionOf(s, i, particles_[s].integer(field::id)[i]);
                       return p ? *p : particles_[s].x()[i];
                     })
         << " (positions at the start of the step)" << (notFinite.empty() ? " on another rank" : "");
@@ -813,7 +817,11 @@ RunOutcome Solver::run(const Writer& write, const Monitor& afterStep, const Obse
     const double dt = stepSizeFor(state_.nextDeltaT);
     {
       ScopedPhase phase(phases_, "health");
-      snapshot_.take(particles_, dynamicSets_, state_);
+      // Fields set once are moved only by a reordering (or a parallel run's migration): other steps leave them.
+      static const std::vector<std::string> setOnce{field::id,    field::objectId,    field::materialId,
+                                                    field::fixed, field::restPosition, field::sampledFixed};
+      snapshot_.take(particles_, dynamicSets_, state_,
+                     ghosts_ || sortsThisStep() ? std::vector<std::string>{} : setOnce);
     }
     step(dt);
     logProgress(clock.seconds(), startTime);

@@ -95,6 +95,8 @@ public:
 private:
   StepContext context(double deltaT);
   void searchNeighbours(double deltaT);
+  /// Whether the coming step puts the particles into Morton order (every sortInterval steps).
+  bool sortsThisStep() const;
   /// Parallel runs: whether the Verlet skin still holds over every rank since the last migration (searchOrigin), so
   /// that the ranks keep their particles and ghosts instead of migrating and building a new halo.
   bool skinHoldsOnEveryRank() const;

@@ -2,6 +2,8 @@
 
 #include "core/Parallel.hpp"
 
+#include <algorithm>
+
 namespace poro {
 
 namespace {
@@ -20,7 +22,7 @@ template <class T, class Variant> void copyInto(Variant& to, const std::vector<T
 } // namespace
 
 void StateSnapshot::take(const ParticleSystem& particles, const std::vector<std::size_t>& sets,
-                         const RunState& state) {
+                         const RunState& state, const std::vector<std::string>& keptInPlace) {
   state_ = state;
   sets_.resize(sets.size());
   for (std::size_t k = 0; k < sets.size(); ++k) {
@@ -30,7 +32,8 @@ void StateSnapshot::take(const ParticleSystem& particles, const std::vector<std:
     copy.size = set.size();
     std::size_t n = 0;
     for (const auto& info : set.fields()) {
-      if (!(info.role & Output)) continue;
+      if (!(info.role & Output) || std::find(keptInPlace.begin(), keptInPlace.end(), info.name) != keptInPlace.end())
+        continue;
       if (n == copy.fields.size()) copy.fields.emplace_back();
       Field& field = copy.fields[n++];
       field.name = info.name;
@@ -64,7 +67,7 @@ void StateSnapshot::restore(ParticleSystem& particles, RunState& state) const {
   }
 }
 
-std::optional<Vec3> StateSnapshot::positionOf(std::size_t set, std::int64_t id) const {
+std::optional<Vec3> StateSnapshot::positionOf(std::size_t set, std::size_t index, std::int64_t id) const {
   for (const Set& copy : sets_) {
     if (copy.index != set) continue;
     const std::vector<std::int64_t>* ids = nullptr;
@@ -73,7 +76,8 @@ std::optional<Vec3> StateSnapshot::positionOf(std::size_t set, std::int64_t id) 
       if (f.name == field::id) ids = std::get_if<std::vector<std::int64_t>>(&f.data);
       if (f.name == field::x) x = std::get_if<std::vector<Vec3>>(&f.data);
     }
-    if (!ids || !x) return std::nullopt;
+    if (!x) return std::nullopt;
+    if (!ids) return index < x->size() ? std::optional<Vec3>((*x)[index]) : std::nullopt; // the order is kept
     for (std::size_t i = 0; i < ids->size(); ++i)
       if ((*ids)[i] == id) return (*x)[i];
   }

@@ -15,14 +15,18 @@ namespace poro {
 
 class StateSnapshot {
 public:
-  /// Copies the output fields of `sets`; storage is reused from step to step.
-  void take(const ParticleSystem& particles, const std::vector<std::size_t>& sets, const RunState& state);
+  /// Copies the output fields of `sets`; storage is reused from step to step. `keptInPlace` names fields the
+  /// coming step does not write and whose order it keeps (no reordering, no removal): they are not copied, and
+  /// restore() leaves them as they are.
+  void take(const ParticleSystem& particles, const std::vector<std::size_t>& sets, const RunState& state,
+            const std::vector<std::string>& keptInPlace = {});
   /// Puts the copied fields (and particle counts) back.
   void restore(ParticleSystem& particles, RunState& state) const;
 
   const RunState& state() const { return state_; }
-  /// Where the particle with persistent id `id` of set `set` was when the snapshot was taken.
-  std::optional<Vec3> positionOf(std::size_t set, std::int64_t id) const;
+  /// Where the particle with persistent id `id`, now at `index` of set `set`, was when the snapshot was taken
+  /// (found by its id where the ids were copied, else at the same index).
+  std::optional<Vec3> positionOf(std::size_t set, std::size_t index, std::int64_t id) const;
 
 private:
   using Data = std::variant<std::vector<Real>, std::vector<Vec3>, std::vector<Mat3>, std::vector<std::int64_t>>;

@@ -78,8 +78,27 @@ TEST(StateSnapshot, RestoreGivesBackFieldsAndParticleCount) {
   EXPECT_EQ(pressure, p);
   EXPECT_EQ(state.step, 7);
   EXPECT_EQ(state.time, 0.5);
-  EXPECT_EQ(*snapshot.positionOf(0, 5), x[5]);
-  EXPECT_FALSE(snapshot.positionOf(0, 100000).has_value());
+  EXPECT_EQ(*snapshot.positionOf(0, 7, 5), x[5]) << "found by its id";
+  EXPECT_FALSE(snapshot.positionOf(0, 0, 100000).has_value());
+}
+
+TEST(StateSnapshot, FieldsKeptInPlaceAreNeitherCopiedNorRestored) {
+  // A step that keeps the order leaves ids (and other fields set once) as they are: the snapshot leaves them out,
+  // and finds a particle's last position at its index.
+  ParticleSystem ps = waterBlock();
+  ParticleSet& set = ps[0];
+  const std::vector<Vec3> x = set.x();
+  const std::vector<std::int64_t> ids = set.integer(field::id);
+  StateSnapshot snapshot;
+  snapshot.take(ps, {0}, RunState{}, {field::id});
+  for (auto& xi : set.x()) xi.x() += 1.0;
+  set.integer(field::id)[3] = -1; // a step never does this: only shows that restore leaves the field alone
+  RunState state;
+  snapshot.restore(ps, state);
+  EXPECT_EQ(set.x(), x);
+  EXPECT_EQ(set.integer(field::id)[3], -1);
+  EXPECT_EQ(*snapshot.positionOf(0, 5, ids[5]), x[5]);
+  EXPECT_FALSE(snapshot.positionOf(0, x.size(), 0).has_value());
 }
 
 TEST(Health, NaNUndoesTheStepAndWritesTheLastFiniteState) {
