@@ -36,10 +36,13 @@ Lists bruteForce(const Positions& xa, const Positions& xb, double h, bool self) 
 
 Lists toLists(const NeighbourList& list) {
   Lists result(list.particles());
+  std::size_t pairs = 0;
   for (std::size_t i = 0; i < list.particles(); ++i) {
-    EXPECT_EQ(list.offset(i), static_cast<std::size_t>(list.of(i).begin() - list.of(0).begin()));
+    EXPECT_EQ(list.offset(i), pairs) << "per-pair data of particle " << i << " starts after the pairs before it";
     for (Index j : list.of(i)) result[i].push_back(j);
+    pairs += list.of(i).size();
   }
+  EXPECT_EQ(list.totalPairs(), pairs);
   return result;
 }
 
@@ -510,6 +513,40 @@ TEST(NeighbourSearch, SkinListsDoNotDependOnTheSearchHistory) {
     for (auto& p : x) p += Vec3(0.0007, -0.0004, 0.0005); // 0.024 H a step: candidates last two steps
   }
   EXPECT_LT(used.gridSearches(), used.updates()) << "the candidates were never reused";
+}
+
+// Particles that swing back and forth (never far enough to be movers) make pairs cross H both ways again and
+// again within one set of candidates: every update's lists must be those of a fresh search, in the same ascending
+// order, for a set with itself and with another.
+TEST(NeighbourSearch, PairsCrossingHBothWaysKeepTheListsOfAFreshSearch) {
+  const double h = 0.04, skin = 0.1 * h;
+  const Positions rest = randomPoints(1500, Vec3::Zero(), Vec3(0.2, 0.2, 0.2), 13);
+  const Positions wall = randomPoints(600, Vec3(-0.02, -0.02, -0.02), Vec3(0.22, 0.0, 0.22), 14);
+  Positions x = rest;
+  const std::vector<const Positions*> sets{&x, &wall};
+  const std::vector<std::vector<bool>> wanted{{true, true}, {false, false}};
+  NeighbourSearch used(h, skin);
+  std::mt19937_64 rng(15);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Vec3> direction(x.size());
+  for (Vec3& d : direction) d = Vec3(u(rng), u(rng), u(rng)).normalized();
+  std::size_t changed = 0;
+  Lists before;
+  for (int step = 0; step < 12; ++step) {
+    for (std::size_t i = 0; i < x.size(); ++i) // within skin / 4 of the rest position: never a mover
+      x[i] = rest[i] + 0.24 * skin * std::sin(1.3 * step + static_cast<double>(i)) * direction[i];
+    used.update(sets, wanted);
+    NeighbourSearch fresh(h, skin);
+    fresh.update(sets, wanted);
+    for (std::size_t b = 0; b < 2; ++b) {
+      const Lists lists = toLists(used.list(0, b));
+      EXPECT_TRUE(lists == toLists(fresh.list(0, b))) << "step " << step << ", list 0->" << b;
+      if (b == 0 && step > 0) changed += lists != before;
+      if (b == 0) before = lists;
+    }
+  }
+  EXPECT_EQ(used.gridSearches(), 1u) << "the candidates served every update";
+  EXPECT_GT(changed, 5u) << "pairs crossed H between updates";
 }
 
 // A set that changed size (particles removed by the health checks) is searched again, never filtered
