@@ -101,12 +101,4 @@ double max(std::size_t n, double lowest, const Value& value) {
   return result;
 }
 
-/// Exclusive prefix sum of counts into offsets (offsets has counts.size() + 1 entries).
-template <class Int>
-void exclusiveScan(const std::vector<Int>& counts, std::vector<Int>& offsets) {
-  offsets.resize(counts.size() + 1);
-  offsets[0] = 0;
-  for (std::size_t i = 0; i < counts.size(); ++i) offsets[i + 1] = offsets[i] + counts[i];
-}
-
 } // namespace poro::parallel

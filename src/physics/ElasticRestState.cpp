@@ -152,7 +152,8 @@ void ElasticRestState::storeGradients(const std::vector<Vec3>& rest, const Cubic
     for (std::size_t pair = begin(s); pair < end(s); ++pair) {
       const PairGradient g = rounded(s, pair);
       gradientCodes_[pair] = static_cast<std::uint16_t>(
-          std::lower_bound(gradientTable_.begin(), gradientTable_.end(), g, bitsBefore<PairGradient>) - gradientTable_.begin());
+          std::lower_bound(gradientTable_.begin(), gradientTable_.end(), g, bitsBefore<PairGradient>) -
+          gradientTable_.begin());
     }
   });
 }

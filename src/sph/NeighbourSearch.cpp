@@ -148,8 +148,8 @@ void NeighbourSearch::assemble(std::size_t n, NeighbourList& list, const AppendN
   // In rounds of a few chunks per thread: the chunks' buffers then hold one round's pairs beside the list, not a
   // second copy of all of it (the largest list of the published Seep at r = 1 cm holds 18 MB of indices, and its
   // copy was the peak of the run's memory). Small lists take one round.
-  const std::size_t perRound =
-      std::max(kChunksPerThreadAndRound * static_cast<std::size_t>(parallel::threads()), (chunks + kRounds - 1) / kRounds);
+  const std::size_t perRound = std::max(kChunksPerThreadAndRound * static_cast<std::size_t>(parallel::threads()),
+                                        (chunks + kRounds - 1) / kRounds);
   std::vector<IndexBuffer> buffers(std::min(chunks, perRound));
   list.offsets_.resize(n + 1);
   list.offsets_[0] = 0;
@@ -175,9 +175,10 @@ void NeighbourSearch::assemble(std::size_t n, NeighbourList& list, const AppendN
     for (std::size_t i = first * kChunk; i < lastParticle; ++i) {
       pairs += list.offsets_[i + 1];
       if (pairs > std::numeric_limits<std::uint32_t>::max())
-        throw NumericalError("neighbour search: more than " + std::to_string(std::numeric_limits<std::uint32_t>::max()) +
-                             " pairs in one list, more than its 32-bit offsets hold (some hundred million particles "
-                             "in one set); decompose the case (mpirun, -parallel)");
+        throw NumericalError("neighbour search: a list of more than " +
+                             std::to_string(std::numeric_limits<std::uint32_t>::max()) +
+                             " pairs, which its 32-bit offsets cannot hold (some hundred million particles in one "
+                             "set); decompose the case (mpirun, -parallel)");
       list.offsets_[i + 1] = static_cast<std::uint32_t>(pairs);
     }
     if (pairs > list.indices_.capacity()) // grown to what the rounds so far suggest for the whole list

@@ -143,7 +143,8 @@ TEST(NeighbourSearch, ListsOfManyChunksAreAssembledInRounds) {
       for (std::size_t i = 0; i < x.size(); i += 97) { // a sample, against brute force for that particle
         Positions one{x[i]};
         Lists expected = bruteForce(one, x, h, false);
-        expected[0].erase(std::remove(expected[0].begin(), expected[0].end(), static_cast<Index>(i)), expected[0].end());
+        expected[0].erase(std::remove(expected[0].begin(), expected[0].end(), static_cast<Index>(i)),
+                          expected[0].end());
         expectSameSets({found[i]}, expected, ("particle " + std::to_string(i)).c_str());
       }
       std::size_t pairs = 0;
