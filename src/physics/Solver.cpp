@@ -820,8 +820,9 @@ RunOutcome Solver::run(const Writer& write, const Monitor& afterStep, const Obse
       // Fields set once are moved only by a reordering (or a parallel run's migration): other steps leave them.
       static const std::vector<std::string> setOnce{field::id,    field::objectId,    field::materialId,
                                                     field::fixed, field::restPosition, field::sampledFixed};
-      snapshot_.take(particles_, dynamicSets_, state_,
-                     ghosts_ || sortsThisStep() ? std::vector<std::string>{} : setOnce);
+      static const std::vector<std::string> none;
+      const std::vector<std::string>& kept = ghosts_ || sortsThisStep() ? none : setOnce; // a reference, not a copy
+      snapshot_.take(particles_, dynamicSets_, state_, kept);
     }
     step(dt);
     logProgress(clock.seconds(), startTime);
