@@ -5,6 +5,7 @@
 #include "physics/RotationExtraction.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace poro {
 
@@ -110,9 +111,8 @@ void Elasticity::prepareBody(const StepContext& ctx, Body& body) {
 
   body.shear.resize(n);
   body.volumetric.resize(n);
-  body.rotatedCorrection.resize(n);
-  body.rhsStress.resize(n);
   body.stress.resize(n);
+  body.stressOfPositions = true;
   body.stressed.clear();
   const std::size_t owned = ctx.owned(body.set);
   if (owned < n) { // ghosts: rest neighbour lists are symmetric, so a ghost is read if an own particle is in its list
@@ -133,9 +133,8 @@ void Elasticity::prepareBody(const StepContext& ctx, Body& body) {
     const double sat = saturation[s];
     body.shear[s] = std::max(1.0 + material.shearSoftening * sat, kLameFloor) * mu;
     body.volumetric[s] = std::max(1.0 + material.volumeSoftening * sat, kLameFloor) * volumetricModulus;
-    body.rotatedCorrection[s] = rl;
     const Mat3 stress = stressOf(strain, body.shear[s], body.volumetric[s]) - (bloating * sat) * Mat3::Identity();
-    body.rhsStress[s] = rest.volume(s) * (stress * rl);
+    body.stress[s] = rest.volume(s) * (stress * rl);
   });
 }
 
@@ -168,6 +167,8 @@ void Elasticity::addApply(const linalg::BlockVector& u, const linalg::BlockVecto
     const Vec3* v = u[body.part].data;
     Vec3* out = au[body.part].data;
     const std::size_t n = u[body.part].size;
+    const auto& rotation = ctx_->particles[body.set].mat3(field::rotation);
+    body.stressOfPositions = false;
     // All stresses first, then the forces (METHOD.md §6.5.4). The forces of own particles read the stresses of their
     // rest neighbours, ghosts among them in a parallel run: those are formed here too, from the ghosts' velocities
     // that follow the own ones in the storage (GhostExchange.hpp; the set's size counts both).
@@ -177,7 +178,7 @@ void Elasticity::addApply(const linalg::BlockVector& u, const linalg::BlockVecto
         const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
         addOuter(gradient, v[t] - v[s], rest.weightedGradient(pair));
       }
-      const Mat3& rl = body.rotatedCorrection[s];
+      const Mat3 rl = rotation[s] * rest.correction(s);
       const Mat3 eps = symmetric(dt * gradient * rl.transpose());
       body.stress[s] = rest.volume(s) * (stressOf(eps, body.shear[s], body.volumetric[s]) * rl);
     });
@@ -215,14 +216,14 @@ void Elasticity::addDiagonal(const linalg::BlockDiagonal& d) const {
         double identityPart = 0.0;
         for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
           const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
-          const Vec3 gts = body.rotatedCorrection[t] * rest.weightedGradient(pair);
+          const Vec3 gts = (rotation[t] * rest.correction(t)) * rest.weightedGradient(pair);
           const double inverseVolume = rest.inverseVolume(t);
           identityPart += body.shear[t] * inverseVolume * gts.squaredNorm();
           addOuter(neighbours, ((body.shear[t] + body.volumetric[t]) * inverseVolume) * gts, gts);
         }
         neighbours.diagonal().array() += identityPart;
       }
-      const Vec3 g = body.rotatedCorrection[s] * rest.gradientSum(s);
+      const Vec3 g = (rotation[s] * rest.correction(s)) * rest.gradientSum(s);
       out[s] += dt2 * (v0 * stiffnessBlock(g, body.shear[s], body.volumetric[s]) + v0 * v0 * neighbours);
     });
   }
@@ -231,8 +232,9 @@ void Elasticity::addDiagonal(const linalg::BlockDiagonal& d) const {
 void Elasticity::addRhs(const linalg::BlockVector& b) const {
   const double dt = ctx_->dt;
   for (const Body& body : bodies_) {
+    if (!body.stressOfPositions) throw std::logic_error("Elasticity::addRhs after addApply: prepare() again first");
     Vec3* out = b[body.part].data;
-    parallel::forEach(b[body.part].size, [&](std::size_t s) { out[s] += dt * force(body, body.rhsStress, s); });
+    parallel::forEach(b[body.part].size, [&](std::size_t s) { out[s] += dt * force(body, body.stress, s); });
   }
 }
 
