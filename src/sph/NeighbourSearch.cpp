@@ -13,6 +13,7 @@
 #include <numeric>
 #include <sstream>
 #include <string>
+#include <type_traits>
 
 namespace poro {
 
@@ -133,24 +134,44 @@ NeighbourSearch::CellGrid NeighbourSearch::makeGrid(const std::vector<const std:
   return grid;
 }
 
-void NeighbourSearch::clearLists(std::vector<NeighbourList>& lists) const {
+template <class List> void NeighbourSearch::clearLists(std::vector<List>& lists) const {
   // Emptied, not freed: the next lists reuse the memory instead of faulting in fresh pages every step.
   lists.resize(sets_ * sets_);
-  for (NeighbourList& list : lists) {
+  for (List& list : lists) {
     list.offsets_.clear();
     list.indices_.clear();
   }
 }
 
-template <class AppendNeighbours>
-void NeighbourSearch::assemble(std::size_t n, NeighbourList& list, const AppendNeighbours& append) {
+void NeighbourSearch::encodeCandidates(const Index* first, const Index* last, CodeBuffer& out) {
+  if (first == last) return;
+  const auto index = [&out](Index j) {
+    out.push_back(static_cast<std::uint16_t>(static_cast<std::uint32_t>(j) & 0xffffu));
+    out.push_back(static_cast<std::uint16_t>(static_cast<std::uint32_t>(j) >> 16));
+  };
+  index(*first);
+  for (const Index* k = first + 1; k < last; ++k) {
+    const std::uint32_t step = static_cast<std::uint32_t>(*k - *(k - 1)); // >= 1: ascending and distinct
+    if (step <= 0xffffu) {
+      out.push_back(static_cast<std::uint16_t>(step));
+    } else {
+      out.push_back(0);
+      index(*k);
+    }
+  }
+}
+
+template <class List, class AppendNeighbours>
+void NeighbourSearch::assemble(std::size_t n, List& list, const AppendNeighbours& append) {
+  using Element = typename decltype(list.indices_)::value_type;
+  using Buffer = std::vector<Element, UninitialisedAllocator<Element>>;
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
   // In rounds of a few chunks per thread: the chunks' buffers then hold one round's pairs beside the list, not a
   // second copy of all of it (the largest list of the published Seep at r = 1 cm holds 18 MB of indices, and its
   // copy was the peak of the run's memory). Small lists take one round.
   const std::size_t perRound = std::max(kChunksPerThreadAndRound * static_cast<std::size_t>(parallel::threads()),
                                         (chunks + kRounds - 1) / kRounds);
-  std::vector<IndexBuffer> buffers(std::min(chunks, perRound));
+  std::vector<Buffer> buffers(std::min(chunks, perRound));
   list.offsets_.resize(n + 1);
   list.offsets_[0] = 0;
   list.indices_.clear(); // the capacity stays: most updates need about what the last one did
@@ -159,7 +180,7 @@ void NeighbourSearch::assemble(std::size_t n, NeighbourList& list, const AppendN
     parallel::forEachTask(last - first, [&](std::size_t k) {
       // Filled in a buffer held by the task itself and put back at the end: the headers of neighbouring chunks'
       // buffers share cache lines, which every append wrote from both threads (Climb's search phase 1.10 -> 1.06 s).
-      IndexBuffer out = std::move(buffers[k]);
+      Buffer out = std::move(buffers[k]);
       out.clear();
       out.reserve(kChunk * 40);
       const std::size_t end = std::min(n, (first + k + 1) * kChunk);
@@ -185,7 +206,7 @@ void NeighbourSearch::assemble(std::size_t n, NeighbourList& list, const AppendN
       list.indices_.reserve(std::max<std::uint64_t>(pairs, pairs * chunks / last) + pairs / 32);
     list.indices_.resize(pairs);
     parallel::forEach(last - first, [&](std::size_t k) {
-      const IndexBuffer& src = buffers[k];
+      const Buffer& src = buffers[k];
       std::copy(src.begin(), src.end(), list.indices_.begin() + list.offsets_[(first + k) * kChunk]);
     });
   }
@@ -202,7 +223,7 @@ void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positi
     // than it saves: search at H, in stencil order (the mode is a function of the state, so a restarted run
     // picks the same one).
     valid_ = false;
-    build(positions, wanted, h_, lists_, false);
+    build(positions, wanted, h_, lists_);
     return;
   }
   std::size_t listedParticles = 0;
@@ -211,7 +232,7 @@ void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positi
       listedParticles += listedOf(a, positions[a]->size());
   // Movers of every set count (ghosts, walls), against the particles that get lists: on the safe side.
   if (candidatesStale(positions, wanted) || findMovers(positions) * particlesPerMover > listedParticles) {
-    build(positions, wanted, h_ + skin_, candidates_, true);
+    build(positions, wanted, h_ + skin_, candidates_);
     builtAt_.resize(sets_);
     for (std::size_t s = 0; s < sets_; ++s) builtAt_[s] = *positions[s];
     builtWanted_ = wanted;
@@ -258,7 +279,7 @@ void NeighbourSearch::filterCandidates(const std::vector<const std::vector<Vec3>
                                        std::size_t b) {
   const auto& xa = *positions[a];
   const auto& xb = *positions[b];
-  const NeighbourList& candidates = candidates_[a * sets_ + b];
+  const CandidateList& candidates = candidates_[a * sets_ + b];
   const std::size_t withList = listedOf(a, xa.size());
   const double h2 = h_ * h_;
   const std::uint8_t* const aMoves = isMover_[a].empty() ? nullptr : isMover_[a].data();
@@ -306,21 +327,30 @@ void NeighbourSearch::filterCandidates(const std::vector<const std::vector<Vec3>
       sortAscending(out.data() + used, out.data() + out.size());
       return;
     }
-    // Branch-free: three candidates in four are neighbours, in no order a predictor could learn. The movers
-    // of b are left out here: they come from the search around them, in `extras`.
-    out.resize(used + candidates.of(i).size());
+    // Branch-free keeping: three candidates in four are neighbours, in no order a predictor could learn. The
+    // movers of b are left out here: they come from the search around them, in `extras`. A particle has at least
+    // as many codes as candidates.
+    const std::uint16_t* code = candidates.indices_.data() + candidates.offsets_[i];
+    const std::uint16_t* const codesEnd = candidates.indices_.data() + candidates.offsets_[i + 1];
+    out.resize(used + static_cast<std::size_t>(codesEnd - code));
     Index* const dst = out.data() + used;
     std::size_t kept = 0;
-    if (bMoves) {
-      for (const Index j : candidates.of(i)) {
-        dst[kept] = j;
-        kept += static_cast<std::size_t>(((p - xb[static_cast<std::size_t>(j)]).squaredNorm() < h2) & (bMoves[j] == 0));
-      }
-    } else {
-      for (const Index j : candidates.of(i)) {
-        dst[kept] = j;
-        kept += static_cast<std::size_t>((p - xb[static_cast<std::size_t>(j)]).squaredNorm() < h2);
-      }
+    const auto keep = [&](std::uint32_t j) {
+      dst[kept] = static_cast<Index>(j);
+      const bool within = (p - xb[j]).squaredNorm() < h2;
+      kept += static_cast<std::size_t>(bMoves ? within & (bMoves[j] == 0) : within);
+    };
+    const auto index = [&code]() { // an index in two codes
+      const std::uint32_t j = static_cast<std::uint32_t>(code[0]) | static_cast<std::uint32_t>(code[1]) << 16;
+      code += 2;
+      return j;
+    };
+    std::uint32_t j = 0;
+    if (code < codesEnd) keep(j = index());
+    while (code < codesEnd) {
+      const std::uint16_t step = *code++;
+      j = step != 0 ? j + step : index();
+      keep(j);
     }
     out.resize(used + kept);
     if (bMoves && extraStart[i] != extraStart[i + 1]) {
@@ -432,9 +462,10 @@ void NeighbourSearch::sortIntoCells(const std::vector<Vec3>& xs, const CellGrid&
   }
 }
 
+template <class List>
 void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positions,
-                            const std::vector<std::vector<bool>>& wanted, double radius,
-                            std::vector<NeighbourList>& lists, bool ascending) {
+                            const std::vector<std::vector<bool>>& wanted, double radius, std::vector<List>& lists) {
+  constexpr bool ascending = std::is_same_v<List, CandidateList>;
   ++gridSearches_;
   clearLists(lists);
   const CellGrid grid = makeGrid(positions, radius);
@@ -470,8 +501,7 @@ void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positio
       const SortedCoordinates& sx = sortedX[b];
       const bool self = a == b;
       const std::size_t withList = listedOf(a, xa.size());
-      assemble(xa.size(), lists[a * sets_ + b], [&](std::size_t i, IndexBuffer& out) {
-        if (i >= withList) return;
+      const auto find = [&](std::size_t i, IndexBuffer& out) {
         const Vec3& p = xa[i];
         const CellIndex c = cellOf(p);
         const Index skipped = self ? static_cast<Index>(i) : Index(-1);
@@ -497,11 +527,24 @@ void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positio
           kept += keepWithin(sx, s.index.data(), static_cast<std::size_t>(first[r]), static_cast<std::size_t>(last[r]), p,
                              radius2, skipped, dst + kept);
         out.resize(before + kept);
-        if (ascending) sortAscending(out.data() + before, out.data() + out.size());
-      });
+      };
+      if constexpr (ascending) {
+        assemble(xa.size(), lists[a * sets_ + b], [&](std::size_t i, CodeBuffer& out) {
+          if (i >= withList) return;
+          thread_local IndexBuffer found; // the task's, encoded as soon as found
+          found.clear();
+          find(i, found);
+          sortAscending(found.data(), found.data() + found.size());
+          encodeCandidates(found.data(), found.data() + found.size(), out);
+        });
+      } else {
+        assemble(xa.size(), lists[a * sets_ + b], [&](std::size_t i, IndexBuffer& out) {
+          if (i < withList) find(i, out);
+        });
+      }
     }
   }
-  if (ascending) {
+  if constexpr (ascending) {
     builtGrid_ = grid;
     builtCells_ = std::move(sorted);
   }

@@ -492,6 +492,37 @@ TEST(NeighbourSearch, SkinListsEqualBruteForceWhileParticlesMove) {
   EXPECT_LT(search.gridSearches(), search.updates()) << "the candidates were never reused";
 }
 
+// The candidates are kept as 16-bit steps between ascending indices, a step of 2^16 or more as an escape and the
+// index in full. Neighbours whose indices lie further apart than that (a large wall set, any order) must come
+// back exactly: a first candidate beyond 2^16, steps of 2^16 - 1 (the largest step in one code), 2^16 and more.
+TEST(NeighbourSearch, CandidatesFarApartInIndexKeepTheirLists) {
+  const double h = 0.04;
+  const double skin = 0.1 * h;
+  const std::size_t n = 200000;
+  Positions wall = randomPoints(n, Vec3(1.0, 1.0, 1.0), Vec3(1.3, 1.3, 1.3), 21); // far from the fluid
+  const Vec3 first(0.1, 0.1, 0.1), second(0.5, 0.5, 0.5);
+  const std::vector<std::size_t> nearFirst{0, 1, 65536, 131072, 131073, n - 1}; // steps 65535, 65536, 68926
+  const std::vector<std::size_t> nearSecond{70000, 140000, 140001};            // the first beyond 2^16
+  for (std::size_t k = 0; k < nearFirst.size(); ++k) wall[nearFirst[k]] = first + Vec3(0.003 * k, 0.0, 0.0);
+  for (std::size_t k = 0; k < nearSecond.size(); ++k) wall[nearSecond[k]] = second + Vec3(0.0, 0.003 * k, 0.0);
+  Positions fluid{first + Vec3(0.0, 0.01, 0.0), second + Vec3(0.01, 0.0, 0.0), Vec3(0.3, 0.3, 0.3)};
+  const std::vector<const Positions*> sets{&fluid, &wall};
+  const std::vector<std::vector<bool>> wanted{{true, true}, {false, false}};
+  NeighbourSearch search(h, skin);
+  for (int step = 0; step < 3; ++step) { // the grid search, then lists from its candidates
+    search.update(sets, wanted);
+    const Lists found = toLists(search.list(0, 1));
+    ASSERT_EQ(found.size(), 3u);
+    const std::vector<Index> firstExpected(nearFirst.begin(), nearFirst.end());
+    const std::vector<Index> secondExpected(nearSecond.begin(), nearSecond.end());
+    EXPECT_EQ(found[0], firstExpected) << "update " << step;
+    EXPECT_EQ(found[1], secondExpected) << "update " << step;
+    EXPECT_TRUE(found[2].empty()) << "update " << step;
+    for (Vec3& p : fluid) p += Vec3(0.1 * skin, 0.0, 0.0);
+  }
+  EXPECT_EQ(search.gridSearches(), 1u) << "the lists after the first must come from the candidates";
+}
+
 // With the skin a list is a function of the positions alone: a search with a history and a fresh one list
 // the same neighbours in the same (ascending) order. This is what lets a run restarted at any step (a
 // signal, a NaN between writes) continue bit for bit.
