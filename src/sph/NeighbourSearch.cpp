@@ -234,7 +234,11 @@ void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positi
   if (candidatesStale(positions, wanted) || findMovers(positions) * particlesPerMover > listedParticles) {
     build(positions, wanted, h_ + skin_, candidates_);
     builtAt_.resize(sets_);
-    for (std::size_t s = 0; s < sets_; ++s) builtAt_[s] = *positions[s];
+    for (std::size_t s = 0; s < sets_; ++s) {
+      const auto& x = *positions[s];
+      builtAt_[s].resize(x.size());
+      parallel::forEach(x.size(), [&](std::size_t i) { builtAt_[s][i] = x[i].cast<float>(); });
+    }
     builtWanted_ = wanted;
     builtListed_ = listed;
     valid_ = true;
@@ -410,8 +414,14 @@ std::size_t NeighbourSearch::findMovers(const std::vector<const std::vector<Vec3
     std::vector<std::uint8_t>& moves = isMover_[s];
     movers_[s].clear();
     // Two particles that each moved less than skin / 2 since the grid search are still candidates if within H.
-    // A position that is not finite moves too: the search around it then stops the run, as a grid search would.
-    auto moved = [&](std::size_t i) { return !(2.0 * (x[i] - x0[i]).norm() < skin_); };
+    // The position then is known to within half a float ulp per coordinate, at most 2^-24 of its magnitude: the
+    // distance moved is bounded by the distance from the rounded position plus that. A position that is not finite
+    // moves too: the search around it then stops the run, as a grid search would.
+    constexpr double kRounding = 0x1p-24;
+    auto moved = [&](std::size_t i) {
+      const Vec3 then = x0[i].cast<double>();
+      return !(2.0 * ((x[i] - then).norm() + kRounding * then.lpNorm<1>()) < skin_);
+    };
     const std::size_t count = parallel::sum<std::size_t>(x.size(), [&](std::size_t i) { return moved(i) ? 1 : 0; });
     if (count == 0) {
       moves.clear();

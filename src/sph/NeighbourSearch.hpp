@@ -155,7 +155,9 @@ private:
   std::size_t sets_ = 0;
   std::vector<NeighbourList> lists_;
   std::vector<CandidateList> candidates_;      ///< lists at H + skin from the last grid search
-  std::vector<std::vector<Vec3>> builtAt_;     ///< positions at the last grid search
+  /// Positions at the last grid search, in single precision: they only tell movers, with the rounding added to the
+  /// distance moved (findMovers()).
+  std::vector<std::vector<Eigen::Vector3f>> builtAt_;
   std::vector<std::vector<bool>> builtWanted_; ///< the lists requested then
   std::vector<std::size_t> listed_;            ///< this update's `listed`
   std::vector<std::size_t> builtListed_;       ///< the candidates' `listed`

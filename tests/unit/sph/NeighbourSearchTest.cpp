@@ -523,6 +523,31 @@ TEST(NeighbourSearch, CandidatesFarApartInIndexKeepTheirLists) {
   EXPECT_EQ(search.gridSearches(), 1u) << "the lists after the first must come from the candidates";
 }
 
+// Where particles stood at the grid search is kept in single precision. Two particles that each moved just over
+// skin / 2 towards each other, whose rounded start positions make each move look shorter than skin / 2, must still
+// be searched afresh: their pair, beyond H + skin then, is within H now. At 1000 m a float is 2^-14 m coarse.
+TEST(NeighbourSearch, MoversAreFoundThoughTheirStartPositionsAreRounded) {
+  const double u = std::ldexp(1.0, -14);
+  const double h = 720.9 * u / 1.1 - 1e-9; // H + skin a hair below 720.9 u
+  const double skin = 0.1 * h;
+  Positions x = randomPoints(200, Vec3(1000.5, 1000.5, 1000.5), Vec3(1001.0, 1001.0, 1001.0), 5);
+  const Vec3 a(1000.0 + 100.55 * u, 1000.25, 1000.25); // rounds up by 0.45 u
+  const Vec3 b(1000.0 + 821.45 * u, 1000.25, 1000.25); // 720.9 u further: rounds down by 0.45 u
+  x.push_back(a);
+  x.push_back(b);
+  const std::vector<const Positions*> sets{&x};
+  NeighbourSearch search(h, skin);
+  search.update(sets, {{true}});
+  ASSERT_TRUE(toLists(search.list(0, 0))[200].empty());
+  const double step = 0.5 * skin + 1e-5; // over skin / 2, but under it by the rounded start (0.45 u = 2.7e-5)
+  x[200] += Vec3(step, 0.0, 0.0);
+  x[201] -= Vec3(step, 0.0, 0.0);
+  ASSERT_LT((x[200] - x[201]).norm(), h);
+  search.update(sets, {{true}});
+  EXPECT_EQ(search.gridSearches(), 1u) << "two movers among 202 particles use the candidates";
+  expectSameSets(toLists(search.list(0, 0)), bruteForce(x, x, h, true), "after the two moved");
+}
+
 // With the skin a list is a function of the positions alone: a search with a history and a fresh one list
 // the same neighbours in the same (ascending) order. This is what lets a run restarted at any step (a
 // signal, a NaN between writes) continue bit for bit.
