@@ -38,9 +38,9 @@ void copy(const BlockVector& x, const BlockVector& y) {
   }
 }
 
-void multiply(const BlockDiagonal& d, const BlockVector& x, const BlockVector& y) {
+void multiply(const BlockPreconditioner& m, const BlockVector& x, const BlockVector& y) {
   for (std::size_t p = 0; p < x.size(); ++p) {
-    const Mat3* ds = d[p].data;
+    const SymmetricBlock* ds = m[p].data;
     const Vec3* xs = x[p].data;
     Vec3* ys = y[p].data;
     parallel::forEach(x[p].size, [&](std::size_t i) { ys[i] = ds[i] * xs[i]; });

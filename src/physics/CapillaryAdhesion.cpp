@@ -93,11 +93,13 @@ void CapillaryAdhesion::addDiagonal(const linalg::BlockDiagonal& d) const {
   for (const Side& side : sides_) {
     const NeighbourList& list = ctx_->search.list(side.self, side.other);
     Mat3* out = d[side.part].data;
-    parallel::forEach(d[side.part].size, [&](std::size_t a) {
+    const std::size_t firstParticle = d[side.part].first;
+    parallel::forEach(d[side.part].size, [&](std::size_t k) {
+      const std::size_t a = firstParticle + k;
       double sum = 0.0;
       const std::size_t first = list.offset(a), last = first + list.of(a).size();
       for (std::size_t q = first; q < last; ++q) sum += side.pairCoefficient[q];
-      out[a] += (dt2 * sum) * Mat3::Identity();
+      out[k] += (dt2 * sum) * Mat3::Identity();
     });
   }
 }

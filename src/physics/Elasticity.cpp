@@ -193,7 +193,9 @@ void Elasticity::addDiagonal(const linalg::BlockDiagonal& d) const {
     const auto& rotation = ctx_->particles[body.set].mat3(field::rotation);
     const double mass = ctx_->particles[body.set].mass;
     Mat3* out = d[body.part].data;
-    parallel::forEach(d[body.part].size, [&](std::size_t s) {
+    const std::size_t first = d[body.part].first;
+    parallel::forEach(d[body.part].size, [&](std::size_t k) {
+      const std::size_t s = first + k;
       // D_s = dt^2 [V0_s B_s(G_s) + V0_s^2 sum_t V0_t B_t(g_ts)], G_s = sum_t V0_t g_st (METHOD.md §6.5.8).
       const double v0 = rest.volume(s);
       const Mat3 moment = rest.neighbourMoment(s);
@@ -224,7 +226,7 @@ void Elasticity::addDiagonal(const linalg::BlockDiagonal& d) const {
         neighbours.diagonal().array() += identityPart;
       }
       const Vec3 g = (rotation[s] * rest.correction(s)) * rest.gradientSum(s);
-      out[s] += dt2 * (v0 * stiffnessBlock(g, body.shear[s], body.volumetric[s]) + v0 * v0 * neighbours);
+      out[k] += dt2 * (v0 * stiffnessBlock(g, body.shear[s], body.volumetric[s]) + v0 * v0 * neighbours);
     });
   }
 }

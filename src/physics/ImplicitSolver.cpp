@@ -6,6 +6,8 @@
 
 #include <Eigen/LU>
 
+#include <algorithm>
+
 namespace poro {
 
 namespace {
@@ -15,20 +17,23 @@ const char* const kRhs = "cgRhs"; ///< b, then r
 const char* const kUnknown = "cgU";
 const char* const kP = "cgP";
 const char* const kQ = "cgQ"; ///< z and q
-const char* const kInverseDiagonal = "cgInverseDiagonal";
 
 /// Rows of Fixed particles hold their known velocity: (A u)_a = m u_a, b_a = m v^n_a, D_a = m I. Their
 /// residual and search directions then stay zero, which equals moving them to the right-hand side
 /// (METHOD.md §6.5.8); the terms' couplings of Active rows to them remain.
+/// row(k, m) for the Fixed particles first + k, k < size, of a part.
 template <class Row>
-void overwriteFixedRows(const StepContext& ctx, std::size_t part, std::size_t size, const Row& row) {
+void overwriteFixedRows(const StepContext& ctx, std::size_t part, std::size_t first, std::size_t size, const Row& row) {
   const ParticleSet& set = ctx.particles[ctx.dynamicSets[part]];
   const std::int64_t* fixed = fixedFlags(set);
   if (!fixed) return;
-  parallel::forEach(size, [&](std::size_t i) {
-    if (fixed[i]) row(i, set.mass);
+  parallel::forEach(size, [&](std::size_t k) {
+    if (fixed[first + k]) row(k, set.mass);
   });
 }
+
+/// Particles per window of the preconditioner's assembly: 0.6 MB of Mat3 blocks per dynamic set.
+constexpr std::size_t kDiagonalWindow = 8192;
 } // namespace
 
 class ImplicitSolver::Operator final : public linalg::BlockOperator {
@@ -49,7 +54,6 @@ ImplicitSolver::ImplicitSolver(const ImplicitSettings& settings, std::vector<std
 void ImplicitSolver::registerFields(ParticleSet& set) {
   set.addVec3(field::deltaV, Restart);
   for (const char* name : {kRhs, kUnknown, kP, kQ}) set.addVec3(name);
-  set.addMat3(kInverseDiagonal);
 }
 
 linalg::BlockVector ImplicitSolver::view(const StepContext& ctx, const char* fieldName) {
@@ -80,7 +84,7 @@ void ImplicitSolver::apply(const linalg::BlockVector& u, const linalg::BlockVect
   }
   for (const ImplicitTerm* term : enabled_) term->addApply(u, au);
   for (std::size_t p = 0; p < u.size(); ++p)
-    overwriteFixedRows(*ctx_, p, u[p].size, [&](std::size_t i, double m) { au[p].data[i] = m * u[p].data[i]; });
+    overwriteFixedRows(*ctx_, p, 0, u[p].size, [&](std::size_t i, double m) { au[p].data[i] = m * u[p].data[i]; });
 }
 
 void ImplicitSolver::diagonal(const linalg::BlockDiagonal& d) const {
@@ -91,7 +95,8 @@ void ImplicitSolver::diagonal(const linalg::BlockDiagonal& d) const {
   }
   for (const ImplicitTerm* term : enabled_) term->addDiagonal(d);
   for (std::size_t p = 0; p < d.size(); ++p)
-    overwriteFixedRows(*ctx_, p, d[p].size, [&](std::size_t i, double m) { d[p].data[i] = m * Mat3::Identity(); });
+    overwriteFixedRows(*ctx_, p, d[p].first, d[p].size,
+                       [&](std::size_t k, double m) { d[p].data[k] = m * Mat3::Identity(); });
 }
 
 void ImplicitSolver::rhs(const linalg::BlockVector& b) const {
@@ -105,7 +110,35 @@ void ImplicitSolver::rhs(const linalg::BlockVector& b) const {
   for (const ImplicitTerm* term : enabled_) term->addRhs(b);
   for (std::size_t p = 0; p < b.size(); ++p) {
     const auto& v = ctx_->particles[ctx_->dynamicSets[p]].v();
-    overwriteFixedRows(*ctx_, p, b[p].size, [&](std::size_t i, double m) { b[p].data[i] = m * v[i]; });
+    overwriteFixedRows(*ctx_, p, 0, b[p].size, [&](std::size_t i, double m) { b[p].data[i] = m * v[i]; });
+  }
+}
+
+void ImplicitSolver::formPreconditioner(const StepContext& ctx) {
+  // The diagonal blocks a window of particles at a time: a Mat3 for every particle would be the largest array of the
+  // solve. Each block is inverted in double and kept in single precision, symmetric.
+  const std::size_t parts = ctx.dynamicSets.size();
+  inverseDiagonal_.resize(parts);
+  std::size_t largest = 0;
+  for (std::size_t p = 0; p < parts; ++p) {
+    inverseDiagonal_[p].resize(ctx.owned(ctx.dynamicSets[p]));
+    largest = std::max(largest, inverseDiagonal_[p].size());
+  }
+  const std::size_t width = std::min(kDiagonalWindow, largest);
+  std::vector<Mat3> blocks(parts * width);
+  for (std::size_t first = 0; first < largest; first += width) {
+    linalg::BlockDiagonal window;
+    for (std::size_t p = 0; p < parts; ++p) {
+      const std::size_t size = inverseDiagonal_[p].size();
+      window.push_back({blocks.data() + p * width, first < size ? std::min(width, size - first) : 0, first});
+    }
+    diagonal(window);
+    for (std::size_t p = 0; p < parts; ++p) {
+      const linalg::Mat3Span& part = window[p];
+      linalg::SymmetricBlock* inverse = inverseDiagonal_[p].data() + first;
+      parallel::forEach(part.size,
+                        [&](std::size_t k) { inverse[k] = linalg::SymmetricBlock(Mat3(part.data[k].inverse())); });
+    }
   }
 }
 
@@ -140,17 +173,10 @@ linalg::CgResult ImplicitSolver::solve(const StepContext& ctx) {
     auto& guess = set.vec3(kUnknown);
     parallel::forEach(set.size(), [&](std::size_t i) { guess[i] = v[i] + guessScale * dv[i]; });
   }
-  linalg::BlockDiagonal inverse;
+  linalg::BlockPreconditioner inverse;
   if (settings_.preconditioner) {
-    for (std::size_t a : ctx.dynamicSets) {
-      auto& f = ctx.particles[a].mat3(kInverseDiagonal);
-      inverse.push_back({f.data(), ctx.owned(a)});
-    }
-    diagonal(inverse);
-    for (const auto& part : inverse) {
-      Mat3* blocks = part.data;
-      parallel::forEach(part.size, [&](std::size_t i) { blocks[i] = Mat3(blocks[i].inverse()); });
-    }
+    formPreconditioner(ctx);
+    for (const auto& blocks : inverseDiagonal_) inverse.push_back({blocks.data(), blocks.size()});
   }
   const linalg::CgWork work{b, view(ctx, kQ), view(ctx, kP), view(ctx, kQ)};
   linalg::CgSettings cg{settings_.tolerance, settings_.maxIterations, {}};

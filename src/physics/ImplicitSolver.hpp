@@ -39,12 +39,17 @@ public:
 
 private:
   class Operator;
+  /// Fills inverseDiagonal_ with the inverses of diagonal()'s blocks.
+  void formPreconditioner(const StepContext& ctx);
   ImplicitSettings settings_;
   std::vector<std::unique_ptr<ImplicitTerm>> terms_;
   std::vector<ImplicitTerm*> enabled_;
   const StepContext* ctx_ = nullptr;
   bool collectWallReactions_ = false;
   std::vector<std::vector<Vec3>> wallReactions_;
+  /// The preconditioner's blocks by dynamic set: scratch of solve(), formed anew every step, so not a particle field
+  /// (nothing to sort or send with the particles).
+  std::vector<std::vector<linalg::SymmetricBlock>> inverseDiagonal_;
 };
 
 } // namespace poro

@@ -109,14 +109,17 @@ void PorousDrag::addDiagonal(const linalg::BlockDiagonal& d) const {
     const auto& xa = ctx_->particles[side.self].x();
     const auto& xb = ctx_->particles[side.other].x();
     Mat3* out = d[side.part].data;
-    parallel::forEachBalanced(d[side.part].size, pairsBefore(list), [&](std::size_t a) {
+    const std::size_t first = d[side.part].first;
+    const auto work = [&](std::size_t k) { return pairsBefore(list)(first + k) - pairsBefore(list)(first); };
+    parallel::forEachBalanced(d[side.part].size, work, [&](std::size_t k) {
+      const std::size_t a = first + k;
       Mat3 block = Mat3::Zero();
       std::size_t q = list.offset(a);
       for (Index bIndex : list.of(a)) {
         const Vec3 xab = xa[a] - xb[static_cast<std::size_t>(bIndex)];
         addOuter(block, side.pairCoefficient[q++] * xab, xab);
       }
-      out[a] -= dt * block;
+      out[k] -= dt * block;
     });
   }
 }

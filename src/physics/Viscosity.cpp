@@ -135,8 +135,10 @@ void Viscosity::addDiagonal(const linalg::BlockDiagonal& d) const {
   for (const Member& member : members_) {
     const auto& x = ctx.particles[member.set].x();
     Mat3* out = d[member.part].data;
+    const std::size_t first = d[member.part].first;
     const NeighbourList& same = ctx.search.list(member.set, member.set);
-    parallel::forEach(d[member.part].size, [&](std::size_t i) {
+    parallel::forEach(d[member.part].size, [&](std::size_t k) {
+      const std::size_t i = first + k;
       Mat3 block = Mat3::Zero();
       std::size_t p = same.offset(i);
       for (Index j : same.of(i)) {
@@ -147,12 +149,12 @@ void Viscosity::addDiagonal(const linalg::BlockDiagonal& d) const {
         const NeighbourList& list = ctx.search.list(member.set, ctx.boundarySets[w]);
         const auto& xk = ctx.particles[ctx.boundarySets[w]].x();
         std::size_t q = list.offset(i);
-        for (Index k : list.of(i)) {
-          const Vec3 xik = x[i] - xk[static_cast<std::size_t>(k)];
+        for (Index c : list.of(i)) {
+          const Vec3 xik = x[i] - xk[static_cast<std::size_t>(c)];
           addOuter(block, member.wallCoefficient[w][q++] * xik, xik);
         }
       }
-      out[i] -= dt * block;
+      out[k] -= dt * block;
     });
   }
 }
