@@ -12,9 +12,10 @@ namespace poro {
 
 namespace {
 // Three Krylov vectors besides the unknown: the right-hand side turns into the residual r in place, and the
-// preconditioned residual z and the product q = A p take turns in one field (linalg::CgWork).
+// preconditioned residual z and the product q = A p take turns in one field (linalg::CgWork). The unknown u is
+// solved for in the velocity field itself, v^n kept meanwhile in dv's (solve()).
 const char* const kRhs = "cgRhs"; ///< b, then r
-const char* const kUnknown = "cgU";
+const char* const kUnknown = field::v;
 const char* const kP = "cgP";
 const char* const kQ = "cgQ"; ///< z and q
 
@@ -53,7 +54,7 @@ ImplicitSolver::ImplicitSolver(const ImplicitSettings& settings, std::vector<std
 
 void ImplicitSolver::registerFields(ParticleSet& set) {
   set.addVec3(field::deltaV, Restart);
-  for (const char* name : {kRhs, kUnknown, kP, kQ}) set.addVec3(name);
+  for (const char* name : {kRhs, kP, kQ}) set.addVec3(name);
 }
 
 linalg::BlockVector ImplicitSolver::view(const StepContext& ctx, const char* fieldName) {
@@ -164,14 +165,18 @@ linalg::CgResult ImplicitSolver::solve(const StepContext& ctx) {
 
   const linalg::BlockVector b = view(ctx, kRhs), u = view(ctx, kUnknown);
   rhs(b);
-  // Initial guess v^n + dv (METHOD.md §6.5.8); compatibility implicitInitialGuess deltaTDeltaV: v^n + dt dv.
+  // Initial guess v^n + dv (METHOD.md §6.5.8); compatibility implicitInitialGuess deltaTDeltaV: v^n + dt dv. The
+  // guess goes into v, v^n into dv until the solve is done: no array of its own for u (24 bytes per particle).
   const double guessScale = ctx.compatibility.deltaTScaledInitialGuess ? ctx.dt : 1.0;
   for (std::size_t a : ctx.dynamicSets) {
     ParticleSet& set = ctx.particles[a];
-    const auto& v = set.v();
-    const auto& dv = set.vec3(field::deltaV);
-    auto& guess = set.vec3(kUnknown);
-    parallel::forEach(set.size(), [&](std::size_t i) { guess[i] = v[i] + guessScale * dv[i]; });
+    auto& v = set.v();
+    auto& dv = set.vec3(field::deltaV);
+    parallel::forEach(set.size(), [&](std::size_t i) {
+      const Vec3 guess = v[i] + guessScale * dv[i];
+      dv[i] = v[i];
+      v[i] = guess;
+    });
   }
   linalg::BlockPreconditioner inverse;
   if (settings_.preconditioner) {
@@ -189,17 +194,18 @@ linalg::CgResult ImplicitSolver::solve(const StepContext& ctx) {
 
   for (std::size_t a : ctx.dynamicSets) { // v* = u + dt g, dv = u - v^n; Fixed: v* = v^n (METHOD.md §6.5.9)
     ParticleSet& set = ctx.particles[a];
-    auto& v = set.v();
-    auto& dv = set.vec3(field::deltaV);
-    const auto& solution = set.vec3(kUnknown);
+    auto& v = set.v(); // u
+    auto& dv = set.vec3(field::deltaV); // v^n
     const std::int64_t* fixed = fixedFlags(set);
     parallel::forEach(set.size(), [&](std::size_t i) {
       if (fixed && fixed[i]) {
+        v[i] = dv[i];
         dv[i].setZero();
         return;
       }
-      dv[i] = solution[i] - v[i];
-      v[i] = solution[i] + gdt;
+      const Vec3 solution = v[i];
+      v[i] = solution + gdt;
+      dv[i] = solution - dv[i];
     });
   }
   return result;
