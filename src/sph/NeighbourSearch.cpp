@@ -495,20 +495,22 @@ void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positio
 
   // Sort every set that is searched in by cell, with a copy of its positions in that order. A grid search at
   // H + skin also sorts the sets that only get lists, and keeps the sorting: the movers' searches use it.
+  // The sorted copy of a set's positions lives while the lists searched in it are filled, one set at a time: the
+  // grid search is where a run's memory peaks.
   std::vector<CellSort> sorted(sets_);
-  std::vector<SortedCoordinates> sortedX(sets_);
   for (std::size_t b = 0; b < sets_; ++b) {
-    bool needed = false;
-    for (std::size_t a = 0; a < sets_; ++a) needed = needed || wanted[a][b] || (ascending && wanted[b][a]);
-    if (needed) sortIntoCells(*positions[b], grid, sorted[b], &sortedX[b]);
-  }
-
-  for (std::size_t a = 0; a < sets_; ++a) {
-    const auto& xa = *positions[a];
-    for (std::size_t b = 0; b < sets_; ++b) {
+    bool needed = false, searchedIn = false;
+    for (std::size_t a = 0; a < sets_; ++a) {
+      needed = needed || wanted[a][b] || (ascending && wanted[b][a]);
+      searchedIn = searchedIn || wanted[a][b];
+    }
+    if (!needed) continue;
+    SortedCoordinates sx;
+    sortIntoCells(*positions[b], grid, sorted[b], searchedIn ? &sx : nullptr);
+    const CellSort& s = sorted[b];
+    for (std::size_t a = 0; a < sets_; ++a) {
       if (!wanted[a][b]) continue;
-      const CellSort& s = sorted[b];
-      const SortedCoordinates& sx = sortedX[b];
+      const auto& xa = *positions[a];
       const bool self = a == b;
       const std::size_t withList = listedOf(a, xa.size());
       const auto find = [&](std::size_t i, IndexBuffer& out) {
