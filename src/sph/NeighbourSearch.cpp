@@ -145,20 +145,24 @@ template <class List> void NeighbourSearch::clearLists(std::vector<List>& lists)
 
 void NeighbourSearch::encodeCandidates(const Index* first, const Index* last, CodeBuffer& out) {
   if (first == last) return;
-  const auto index = [&out](Index j) {
-    out.push_back(static_cast<std::uint16_t>(static_cast<std::uint32_t>(j) & 0xffffu));
-    out.push_back(static_cast<std::uint16_t>(static_cast<std::uint32_t>(j) >> 16));
+  const std::size_t before = out.size();
+  out.resize(before + 3 * static_cast<std::size_t>(last - first)); // at most three codes each
+  std::uint16_t* code = out.data() + before;
+  const auto index = [&code](Index j) {
+    *code++ = static_cast<std::uint16_t>(static_cast<std::uint32_t>(j) & 0xffffu);
+    *code++ = static_cast<std::uint16_t>(static_cast<std::uint32_t>(j) >> 16);
   };
   index(*first);
   for (const Index* k = first + 1; k < last; ++k) {
     const std::uint32_t step = static_cast<std::uint32_t>(*k - *(k - 1)); // >= 1: ascending and distinct
     if (step <= 0xffffu) {
-      out.push_back(static_cast<std::uint16_t>(step));
+      *code++ = static_cast<std::uint16_t>(step);
     } else {
-      out.push_back(0);
+      *code++ = 0;
       index(*k);
     }
   }
+  out.resize(static_cast<std::size_t>(code - out.data()));
 }
 
 template <class List, class AppendNeighbours>
