@@ -16,8 +16,8 @@ bool sameStorage(const BlockVector& a, const BlockVector& b) {
 }
 } // namespace
 
-CgResult solveCg(const BlockOperator& a, const BlockPreconditioner& inverseDiagonal, const BlockVector& b, const BlockVector& x,
-                 const CgWork& work, const CgSettings& settings) {
+CgResult solveCg(const BlockOperator& a, const BlockPreconditioner& inverseDiagonal, const BlockVector& b,
+                 const BlockVector& x, const CgWork& work, const CgSettings& settings) {
   CgResult result;
   const auto dot = [&](const BlockVector& u, const BlockVector& v) {
     const double local = linalg::dot(u, v);

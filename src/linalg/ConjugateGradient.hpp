@@ -36,9 +36,9 @@ struct CgWork {
 };
 
 /// Solves A x = b starting from the given x. `inverseDiagonal` holds the inverted 3x3 diagonal blocks
-/// (block-Jacobi preconditioner, in single precision) or is empty for no preconditioning. Throws NumericalError if p^T A p <= 0
-/// (the operator is not positive definite).
-CgResult solveCg(const BlockOperator& a, const BlockPreconditioner& inverseDiagonal, const BlockVector& b, const BlockVector& x,
-                 const CgWork& work, const CgSettings& settings);
+/// (block-Jacobi preconditioner, in single precision) or is empty for no preconditioning. Throws NumericalError if
+/// p^T A p <= 0 (the operator is not positive definite).
+CgResult solveCg(const BlockOperator& a, const BlockPreconditioner& inverseDiagonal, const BlockVector& b,
+                 const BlockVector& x, const CgWork& work, const CgSettings& settings);
 
 } // namespace poro::linalg

@@ -47,10 +47,10 @@ private:
     bool uniformModuli = true;           ///< no saturation softening: every particle has the material's moduli
     /// V0_s P_s R_s L_s: of the position part (with bloating) after prepare(), read by addRhs(); then of the
     /// velocity part, formed by every addApply(). One array for both: the right-hand side is formed before the CG
-    /// applies the operator, and each holds 72 bytes per particle.
+    /// applies the operator, and each holds 72 bytes per particle. (R_s L_s itself is formed where it is used, 27
+    /// products per particle, not kept.)
     mutable std::vector<Mat3> stress;
     mutable bool stressOfPositions = false; ///< `stress` still holds the position part's
-    // R_s L_s is formed where it is used, not kept: 27 products per particle against 72 bytes each.
     /// The particles whose stresses the own particles' forces read: in a parallel run the own ones and the ghosts
     /// among their rest neighbours, not the ghosts lent only to complete those ghosts' sums; empty: all.
     std::vector<Index> stressed;
