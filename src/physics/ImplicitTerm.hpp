@@ -20,9 +20,11 @@ public:
   virtual void prepare(const StepContext& ctx) = 0;
   /// au += -dt F(u).
   virtual void addApply(const linalg::BlockVector& u, const linalg::BlockVector& au) const = 0;
-  /// d += the term's diagonal blocks of A.
+  /// d[p].data[k] += the term's diagonal block of A for particle d[p].first + k of part p, k < d[p].size (the solve
+  /// forms the diagonal a window of particles at a time).
   virtual void addDiagonal(const linalg::BlockDiagonal& d) const = 0;
-  /// b += dt F^x (position and known-velocity parts).
+  /// b += dt F^x (position and known-velocity parts). Called after prepare() and before the step's first addApply():
+  /// a term may reuse its arrays between the two (Elasticity's stresses).
   virtual void addRhs(const linalg::BlockVector& b) const = 0;
   /// forces[w][k] += the force the term's particles exert on particle k of the boundary set ctx.boundarySets[w]
   /// at the solution u: the reaction of the term's wall part (rigid bodies take it). Terms without walls add none.

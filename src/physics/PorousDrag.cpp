@@ -108,6 +108,7 @@ void PorousDrag::addDiagonal(const linalg::BlockDiagonal& d) const {
     const NeighbourList& list = ctx_->search.list(side.self, side.other);
     const auto& xa = ctx_->particles[side.self].x();
     const auto& xb = ctx_->particles[side.other].x();
+    if (d[side.part].size == 0) continue; // a window past this set's end: `first` may be past its lists too
     Mat3* out = d[side.part].data;
     const std::size_t first = d[side.part].first;
     const auto work = [&](std::size_t k) { return pairsBefore(list)(first + k) - pairsBefore(list)(first); };
