@@ -136,6 +136,7 @@ void ImplicitSolver::formPreconditioner(const StepContext& ctx) {
     diagonal(window);
     for (std::size_t p = 0; p < parts; ++p) {
       const linalg::Mat3Span& part = window[p];
+      if (part.size == 0) continue; // past this set's end
       linalg::SymmetricBlock* inverse = inverseDiagonal_[p].data() + first;
       parallel::forEach(part.size,
                         [&](std::size_t k) { inverse[k] = linalg::SymmetricBlock(Mat3(part.data[k].inverse())); });
