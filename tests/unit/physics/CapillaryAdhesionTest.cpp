@@ -113,15 +113,11 @@ private:
 /// S, phi^loc and rho vary from pair to pair), one compressible; no walls, no Fixed particles.
 ParticleSystem partlyWettedBlocks() {
   std::mt19937 rng(17);
-  std::uniform_real_distribution<double> jitter(-0.3 * kR, 0.3 * kR);
-  auto jittered = [&](std::vector<Vec3> x) {
-    for (Vec3& p : x) p += Vec3(jitter(rng), jitter(rng), jitter(rng));
-    return x;
-  };
+  const double a = 0.3 * kR;
   ParticleSystem ps(kR);
-  addSet(ps, "fluid", SetKind::Fluid, jittered(sampleBox(Vec3(0, 0.05, 0), Vec3(0.16, 0.15, 0.1), kR)));
-  addSet(ps, "sand", SetKind::Porous, jittered(sampleBox(Vec3::Zero(), Vec3(0.08, 0.1, 0.1), kR)));
-  addSet(ps, "foam", SetKind::Porous, jittered(sampleBox(Vec3(0.08, 0, 0), Vec3(0.16, 0.1, 0.1), kR)));
+  addSet(ps, "fluid", SetKind::Fluid, jittered(sampleBox(Vec3(0, 0.05, 0), Vec3(0.16, 0.15, 0.1), kR), rng, a));
+  addSet(ps, "sand", SetKind::Porous, jittered(sampleBox(Vec3::Zero(), Vec3(0.08, 0.1, 0.1), kR), rng, a));
+  addSet(ps, "foam", SetKind::Porous, jittered(sampleBox(Vec3(0.08, 0, 0), Vec3(0.16, 0.1, 0.1), kR), rng, a));
   return ps;
 }
 

@@ -18,14 +18,11 @@ TEST(ImplicitPreconditioner, BlocksFormedInWindowsAreTheWholeDiagonals) {
   // Fluid with viscosity at a floor, seeping into an elastic, damped, dragging, adhering porous block whose
   // lowest particles are Fixed: every implicit term has a diagonal part here.
   std::mt19937 rng(5);
-  std::uniform_real_distribution<double> jitter(-0.2 * kR, 0.2 * kR);
-  auto jittered = [&](std::vector<Vec3> x) {
-    for (Vec3& p : x) p += Vec3(jitter(rng), jitter(rng), jitter(rng));
-    return x;
-  };
+  const double a = 0.2 * kR;
   ParticleSystem ps(kR);
-  addSet(ps, "fluid", SetKind::Fluid, jittered(sampleBox(Vec3(0, 0.06, 0), Vec3(0.1, 0.12, 0.1), kR)));
-  ParticleSet& soil = addSet(ps, "soil", SetKind::Porous, jittered(sampleBox(Vec3::Zero(), Vec3(0.1, 0.08, 0.1), kR)));
+  addSet(ps, "fluid", SetKind::Fluid, jittered(sampleBox(Vec3(0, 0.06, 0), Vec3(0.1, 0.12, 0.1), kR), rng, a));
+  ParticleSet& soil =
+      addSet(ps, "soil", SetKind::Porous, jittered(sampleBox(Vec3::Zero(), Vec3(0.1, 0.08, 0.1), kR), rng, a));
   addSet(ps, "floor", SetKind::Boundary, sampleBox(Vec3(-0.04, -0.04, -0.04), Vec3(0.14, 0.0, 0.14), kR));
   auto& fixed = soil.addInt(field::fixed, Restart);
   for (std::size_t i = 0; i < soil.size(); ++i) fixed[i] = soil.x()[i].y() < 0.01 ? 1 : 0;

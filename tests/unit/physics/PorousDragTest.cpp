@@ -24,15 +24,11 @@ class DragOperator : public ::testing::Test {
 protected:
   void SetUp() override {
     std::mt19937 rng(21);
-    std::uniform_real_distribution<double> jitter(-0.3 * kR, 0.3 * kR);
-    auto jittered = [&](std::vector<Vec3> x) {
-      for (Vec3& p : x) p += Vec3(jitter(rng), jitter(rng), jitter(rng));
-      return x;
-    };
+    const double a = 0.3 * kR;
     ParticleSystem ps(kR);
-    addSet(ps, "fluid", SetKind::Fluid, jittered(sampleBox(Vec3::Zero(), Vec3(0.16, 0.1, 0.1), kR)));
-    addSet(ps, "sand", SetKind::Porous, jittered(sampleBox(Vec3::Zero(), Vec3(0.08, 0.1, 0.1), kR)));
-    addSet(ps, "foam", SetKind::Porous, jittered(sampleBox(Vec3(0.08, 0, 0), Vec3(0.16, 0.1, 0.1), kR)));
+    addSet(ps, "fluid", SetKind::Fluid, jittered(sampleBox(Vec3::Zero(), Vec3(0.16, 0.1, 0.1), kR), rng, a));
+    addSet(ps, "sand", SetKind::Porous, jittered(sampleBox(Vec3::Zero(), Vec3(0.08, 0.1, 0.1), kR), rng, a));
+    addSet(ps, "foam", SetKind::Porous, jittered(sampleBox(Vec3(0.08, 0, 0), Vec3(0.16, 0.1, 0.1), kR), rng, a));
     solver_ = std::make_unique<Solver>(std::move(ps), weightless(),
                                        std::vector<PorousMaterial>{material("sand", 0.4, 2650.0, false, 20.0),
                                                                    material("foam", 0.7, 800.0, true, 50.0)},

@@ -99,16 +99,13 @@ TEST_F(MixedSystem, SolidPressureForcesAreReciprocalAndBuoyancyIsTheFluidsReacti
 
 TEST(SolidPressure, PairForcesCancelWithoutWallsAndFixedParticles) {
   std::mt19937 rng(5);
-  std::uniform_real_distribution<double> jitter(-0.3 * kR, 0.3 * kR), value(0.0, 2.0);
+  std::uniform_real_distribution<double> value(0.0, 2.0);
+  const double a = 0.3 * kR;
   ParticleSystem ps(kR);
-  auto jittered = [&](std::vector<Vec3> x) {
-    for (Vec3& p : x) p += Vec3(jitter(rng), jitter(rng), jitter(rng));
-    return x;
-  };
-  addSet(ps, "sand", SetKind::Porous, jittered(sampleBox(Vec3::Zero(), Vec3(0.08, 0.08, 0.08), kR)), 0);
+  addSet(ps, "sand", SetKind::Porous, jittered(sampleBox(Vec3::Zero(), Vec3(0.08, 0.08, 0.08), kR), rng, a), 0);
   ParticleSet& foam =
-      addSet(ps, "foam", SetKind::Porous, jittered(sampleBox(Vec3(0.08, 0, 0), Vec3(0.16, 0.08, 0.08), kR)), 1);
-  appendObject(foam, jittered(sampleBox(Vec3(0.0, 0.08, 0), Vec3(0.16, 0.16, 0.08), kR)), 2);
+      addSet(ps, "foam", SetKind::Porous, jittered(sampleBox(Vec3(0.08, 0, 0), Vec3(0.16, 0.08, 0.08), kR), rng, a), 1);
+  appendObject(foam, jittered(sampleBox(Vec3(0.0, 0.08, 0), Vec3(0.16, 0.16, 0.08), kR), rng, a), 2);
   Solver solver(std::move(ps), weightless(), {material("sand", 0.4, 2650.0, false), material("foam", 0.7, 800.0, true)},
                 SolverSettings{}, fixedStep(1e-3), RunState{});
   const StepContext ctx = solver.beginStep(1e-3);

@@ -50,6 +50,13 @@ inline void appendObject(ParticleSet& set, const std::vector<Vec3>& x, std::int6
   }
 }
 
+/// `x` with every coordinate moved by a uniform draw from [-amplitude, amplitude): a reproducible irregular lattice.
+inline std::vector<Vec3> jittered(std::vector<Vec3> x, std::mt19937& rng, double amplitude) {
+  std::uniform_real_distribution<double> jitter(-amplitude, amplitude);
+  for (Vec3& p : x) p += Vec3(jitter(rng), jitter(rng), jitter(rng));
+  return x;
+}
+
 inline TimeControl fixedStep(double dt) {
   TimeControl control;
   control.deltaT = dt;
@@ -93,19 +100,13 @@ inline std::vector<Vec3> latticeOfSpacing(const Vec3& min, const Vec3& max, doub
 /// ("foam") with a Fixed bottom layer, all in a wall box: every kind of pair the pressure operator has.
 inline ParticleSystem mixedSystem() {
   std::mt19937 rng(11);
-  std::uniform_real_distribution<double> jitter(-0.3 * kR, 0.3 * kR);
+  const double a = 0.3 * kR;
   ParticleSystem ps(kR);
-  std::vector<Vec3> fluid = sampleBox(Vec3::Zero(), Vec3(0.16, 0.12, 0.12), kR);
-  for (Vec3& p : fluid) p += Vec3(jitter(rng), jitter(rng), jitter(rng));
-  addSet(ps, "fluid", SetKind::Fluid, fluid);
-  std::vector<Vec3> sand = sampleBox(Vec3::Zero(), Vec3(0.08, 0.08, 0.12), kR);
-  for (Vec3& p : sand) p += Vec3(jitter(rng), jitter(rng), jitter(rng));
-  addSet(ps, "sand", SetKind::Porous, sand);
-  std::vector<Vec3> foamA = sampleBox(Vec3(0.08, 0.0, 0.0), Vec3(0.16, 0.04, 0.12), kR);
-  std::vector<Vec3> foamB = sampleBox(Vec3(0.08, 0.04, 0.0), Vec3(0.16, 0.08, 0.12), kR);
-  for (Vec3& p : foamB) p += Vec3(jitter(rng), jitter(rng), jitter(rng));
-  ParticleSet& foam = addSet(ps, "foam", SetKind::Porous, foamA, 2);
-  appendObject(foam, foamB, 3);
+  addSet(ps, "fluid", SetKind::Fluid, jittered(sampleBox(Vec3::Zero(), Vec3(0.16, 0.12, 0.12), kR), rng, a));
+  addSet(ps, "sand", SetKind::Porous, jittered(sampleBox(Vec3::Zero(), Vec3(0.08, 0.08, 0.12), kR), rng, a));
+  ParticleSet& foam =
+      addSet(ps, "foam", SetKind::Porous, sampleBox(Vec3(0.08, 0.0, 0.0), Vec3(0.16, 0.04, 0.12), kR), 2);
+  appendObject(foam, jittered(sampleBox(Vec3(0.08, 0.04, 0.0), Vec3(0.16, 0.08, 0.12), kR), rng, a), 3);
   addSet(ps, "boundary", SetKind::Boundary,
          sampleContainer(Vec3::Constant(-0.001), Vec3::Constant(0.161), kR, 2, {false, false, false, true, false, false}),
          9);
