@@ -13,12 +13,18 @@ namespace poro::memory {
 /// 590 on the published Seep at r = 1 cm). Call once, first thing in main; does nothing on other C libraries.
 void returnLargeBlocksToSystem();
 
+/// Empties an array and gives its block back (clear() keeps it).
+template <class T, class Allocator> void freeAll(std::vector<T, Allocator>& array) {
+  std::vector<T, Allocator>().swap(array);
+}
+
 /// Resizes an array whose old contents are not needed (it is refilled) to n entries. Past its capacity it
 /// allocates n plus 1/32, copying nothing: per-pair arrays grow by a little most steps while fluid enters a
 /// body, and std::vector's doubling would keep up to twice their size; an exact fit would reallocate every step.
+/// The old block is freed before the new one is taken, so the two are never held at once.
 template <class T> void resizeForRefill(std::vector<T>& array, std::size_t n) {
   if (n > array.capacity()) {
-    array.clear(); // nothing to copy into the new block
+    freeAll(array);
     array.reserve(n + n / 32);
   }
   array.resize(n);

@@ -837,7 +837,10 @@ RunOutcome Solver::run(const Writer& write, const Monitor& afterStep, const Obse
     const bool writeTime = isWriteStep(previousTime);
     const StopAt stopAt = control_.stopAt;
     const bool skipWrite = stopAt == StopAt::NoWriteNow && !signal;
-    if ((writeTime || last || signal || stopAt == StopAt::WriteNow) && !skipWrite) writeState(write);
+    if ((writeTime || last || signal || stopAt == StopAt::WriteNow) && !skipWrite) {
+      snapshot_.release(); // the step is healthy: the write's arrays take the snapshot's memory, not more
+      writeState(write);
+    }
     if (stepDone) stepDone(*this);
     if (last) break;
     std::ostringstream msg;

@@ -22,6 +22,8 @@ public:
             const std::vector<std::string>& keptInPlace = {});
   /// Puts the copied fields (and particle counts) back.
   void restore(ParticleSystem& particles, RunState& state) const;
+  /// Frees the copies (the next take() allocates them again): a step found healthy needs them no more.
+  void release() { sets_.clear(); }
 
   const RunState& state() const { return state_; }
   /// Where the particle with persistent id `id`, now at `index` of set `set`, was when the snapshot was taken

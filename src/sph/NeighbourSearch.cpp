@@ -206,8 +206,10 @@ void NeighbourSearch::assemble(std::size_t n, List& list, const AppendNeighbours
                              "set); decompose the case (mpirun, -parallel)");
       list.offsets_[i + 1] = static_cast<std::uint32_t>(pairs);
     }
-    if (pairs > list.indices_.capacity()) // grown to what the rounds so far suggest for the whole list
+    if (pairs > list.indices_.capacity()) { // grown to what the rounds so far suggest for the whole list
+      if (first == 0) memory::freeAll(list.indices_); // nothing in it yet: not held beside its successor
       list.indices_.reserve(std::max<std::uint64_t>(pairs, pairs * chunks / last) + pairs / 32);
+    }
     list.indices_.resize(pairs);
     parallel::forEach(last - first, [&](std::size_t k) {
       const Buffer& src = buffers[k];
