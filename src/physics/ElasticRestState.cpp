@@ -1,5 +1,6 @@
 #include "physics/ElasticRestState.hpp"
 
+#include "core/Memory.hpp"
 #include "core/Parallel.hpp"
 #include "physics/FieldNames.hpp"
 #include "sph/NeighbourSearch.hpp"
@@ -77,7 +78,7 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
     shepard_[s] = shepard;
     volume_[s] = 1.0 / shepard;
   });
-  lists = {};
+  memory::freeAll(lists);
   storeGradients(rest, kernel);
   // Every V0 is known now: sum the moments of the weighted gradients exactly as the terms will read them (rounded).
   parallel::forEach(n, [&](std::size_t s) {
@@ -134,12 +135,12 @@ void ElasticRestState::storeGradients(const std::vector<Vec3>& rest, const Cubic
   std::vector<PairGradient> table;
   for (std::vector<PairGradient>& values : distinct) {
     table.insert(table.end(), values.begin(), values.end());
-    values = {};
+    memory::freeAll(values);
     sortUnique(table);
     if (table.size() > kCodes) break;
   }
   if (table.size() > kCodes) { // every pair keeps its own
-    gradientCodes_ = {};
+    memory::freeAll(gradientCodes_);
     gradientTable_.resize(pairs);
     parallel::forEach(n, [&](std::size_t s) {
       for (std::size_t pair = begin(s); pair < end(s); ++pair) gradientTable_[pair] = rounded(s, pair);
