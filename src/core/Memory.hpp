@@ -13,10 +13,8 @@ namespace poro::memory {
 /// 590 on the published Seep at r = 1 cm). Call once, first thing in main; does nothing on other C libraries.
 void returnLargeBlocksToSystem();
 
-/// Empties an array and gives its block back (clear() keeps it).
-template <class T, class Allocator> void freeAll(std::vector<T, Allocator>& array) {
-  std::vector<T, Allocator>().swap(array);
-}
+/// Empties an array (a std::vector, a ReallocVector) and gives its block back (clear() keeps it).
+template <class Array> void freeAll(Array& array) { Array().swap(array); }
 
 /// Resizes an array whose old contents are not needed (it is refilled) to n entries. Past its capacity it
 /// allocates n plus 1/32, copying nothing: per-pair arrays grow by a little most steps while fluid enters a

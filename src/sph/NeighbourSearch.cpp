@@ -207,7 +207,9 @@ void NeighbourSearch::assemble(std::size_t n, List& list, const AppendNeighbours
       list.offsets_[i + 1] = static_cast<std::uint32_t>(pairs);
     }
     if (pairs > list.indices_.capacity()) { // grown to what the rounds so far suggest for the whole list
-      if (first == 0) memory::freeAll(list.indices_); // nothing in it yet: not held beside its successor
+      // A later round's growth keeps the pairs so far, moved in place (ReallocVector). In the first, nothing is
+      // kept: a fresh block, not the old one's pages moved.
+      if (first == 0) memory::freeAll(list.indices_);
       list.indices_.reserve(std::max<std::uint64_t>(pairs, pairs * chunks / last) + pairs / 32);
     }
     list.indices_.resize(pairs);

@@ -11,6 +11,7 @@
 /// Either way a list is a function of the positions and of the bulk step (update()), so a run restarted at any
 /// step continues bit for bit.
 
+#include "core/ReallocVector.hpp"
 #include "core/Types.hpp"
 
 #include <algorithm>
@@ -41,7 +42,7 @@ private:
   friend class NeighbourSearch;
   /// 32 bits: a list of more than 2^32 - 1 pairs (16 GiB of indices) is refused by the search.
   std::vector<std::uint32_t> offsets_;
-  std::vector<Index> indices_;
+  ReallocVector<Index> indices_; ///< grown in place: see ReallocVector
 };
 
 class NeighbourSearch {
@@ -96,7 +97,7 @@ private:
   /// one grid search to the next (25 MB less for the published Seep at r = 1 cm).
   struct CandidateList {
     std::vector<std::uint32_t> offsets_; ///< particle i's codes are indices_[offsets_[i] .. offsets_[i + 1])
-    std::vector<std::uint16_t> indices_; ///< the codes (named like NeighbourList's, which assemble() fills alike)
+    ReallocVector<std::uint16_t> indices_; ///< the codes (named like NeighbourList's, which assemble() fills alike)
   };
   using CodeBuffer = std::vector<std::uint16_t, UninitialisedAllocator<std::uint16_t>>;
   /// Appends the codes of the ascending, distinct indices [first, last) to `out`.
