@@ -10,7 +10,9 @@ namespace poro::memory {
 /// to it when freed. glibc's allocator would otherwise raise its threshold for that after the first large block
 /// is freed and carve later ones out of its heap, whose freed pages stay with the process: as lists grow step by
 /// step (fluid entering a porous body), the peak memory then grows by blocks no longer in use (about 50 MB of
-/// 590 on the published Seep at r = 1 cm). Call once, first thing in main; does nothing on other C libraries.
+/// 590 on the published Seep at r = 1 cm). The heap keeps little free memory at its top, and every thread
+/// allocates from the one heap (Memory.cpp says why). Call once, first thing in main, before any thread starts;
+/// does nothing on other C libraries.
 void returnLargeBlocksToSystem();
 
 /// Empties an array (a std::vector, a ReallocVector) and gives its block back (clear() keeps it).
