@@ -1,6 +1,6 @@
 #pragma once
-/// An array of trivially copyable values that grows with realloc. Blocks of 1 MiB or more are mapped on their own
-/// (memory::returnLargeBlocksToSystem), and glibc grows a mapped block by moving its pages: the old block is never
+/// An array of trivially copyable values that grows with realloc. Large blocks are mapped on their own
+/// (memory::returnLargeBlocksToSystem), and glibc grows a mapped block by moving its pages: the old block is not
 /// held beside a copy of itself, as it is while a std::vector grows. That copy was the peak of the published Seep at
 /// r = 1 cm, in the neighbour search, where a list outgrows its block part way through its assembly.
 /// The elements a resize adds are left uninitialised: whoever resizes writes them next.
