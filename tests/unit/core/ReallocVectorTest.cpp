@@ -1,8 +1,8 @@
 // ReallocVector (core/ReallocVector.hpp): growth keeps what is held, copies are deep, clear() keeps the block and
 // memory::freeAll gives it back.
 
-#include "core/Memory.hpp"
 #include "core/ReallocVector.hpp"
+#include "core/Memory.hpp"
 
 #include <gtest/gtest.h>
 
@@ -25,8 +25,8 @@ void expectCounting(const ReallocVector<std::uint32_t>& values, std::size_t n) {
 }
 
 TEST(ReallocVector, GrowthKeepsTheValuesHeld) {
-  // From the heap to a mapped block (1 MiB and more), and a mapped block moved to a larger one: both paths of
-  // realloc.
+  // A small block grown to a large one, and that to a larger one: realloc's copy out of the heap and, where glibc
+  // maps the large blocks (the solver's setting), its move of a mapped block's pages.
   ReallocVector<std::uint32_t> values = counting(1000);
   values.reserve(1 << 19); // 2 MiB
   EXPECT_EQ(values.size(), 1000u);
@@ -51,8 +51,8 @@ TEST(ReallocVector, CopiesAreDeepAndMovesEmptyTheSource) {
   ReallocVector<std::uint32_t> moved = std::move(copy);
   EXPECT_EQ(moved.data(), block);
   EXPECT_EQ(moved.size(), 5000u);
-  EXPECT_EQ(copy.size(), 0u);         // NOLINT(bugprone-use-after-move): the state a move leaves is the point
-  EXPECT_EQ(copy.data(), nullptr);    // NOLINT(bugprone-use-after-move)
+  EXPECT_EQ(copy.size(), 0u);      // NOLINT(bugprone-use-after-move): the state a move leaves is the point
+  EXPECT_EQ(copy.data(), nullptr); // NOLINT(bugprone-use-after-move)
 
   copy = moved; // assignment copies too
   expectCounting(copy, 5000);
