@@ -240,6 +240,13 @@ void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positi
       listedParticles += listedOf(a, positions[a]->size());
   // Movers of every set count (ghosts, walls), against the particles that get lists: on the safe side.
   if (candidatesStale(positions, wanted) || findMovers(positions) * particlesPerMover > listedParticles) {
+    // The lists at H are formed afresh from the new candidates below: their blocks are given back first, so that
+    // the grid search's sorted positions and buffers take their place instead of adding to the run's peak memory
+    // (a grid search is where it was). Fresh pages for the lists once per grid search cost little beside it.
+    for (NeighbourList& list : lists_) {
+      memory::freeAll(list.offsets_);
+      memory::freeAll(list.indices_);
+    }
     build(positions, wanted, h_ + skin_, candidates_);
     builtAt_.resize(sets_);
     for (std::size_t s = 0; s < sets_; ++s) {
