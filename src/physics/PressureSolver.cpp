@@ -104,6 +104,8 @@ double partnerProjection(const std::vector<PartnerView>& partners, const Vec3& x
   }
   return sum;
 }
+/// p = pi rho^2 / rho^max (METHOD.md §6.7), in one place: formPressures() must give solve()'s values to the bit.
+double pressureOf(double pi, double density, double rhoMax) { return pi * density * density / rhoMax; }
 } // namespace
 
 void PressureSolver::registerFields(ParticleSet& set, const CompatibilitySettings& compatibility) {
@@ -367,10 +369,21 @@ PressureStats PressureSolver::solve(const StepContext& ctx) const {
     const double rhoMax = set.restDensity;
     parallel::forEach(set.size(), [&](std::size_t i) {
       v[i] += dt * accel[i];
-      pressure[i] = pi[i] * density[i] * density[i] / rhoMax;
+      pressure[i] = pressureOf(pi[i], density[i], rhoMax);
     });
   }
   return stats;
+}
+
+void PressureSolver::formPressures(ParticleSystem& particles, const std::vector<std::size_t>& sets) {
+  for (std::size_t a : sets) {
+    ParticleSet& set = particles[a];
+    const auto& pi = set.real(field::pi);
+    const auto& density = set.real(field::density);
+    auto& pressure = set.real(field::pressure);
+    const double rhoMax = set.restDensity;
+    parallel::forEach(set.size(), [&](std::size_t i) { pressure[i] = pressureOf(pi[i], density[i], rhoMax); });
+  }
 }
 
 std::pair<std::size_t, std::size_t> PressureSolver::mostCompressed(const ParticleSystem& particles,

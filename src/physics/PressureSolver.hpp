@@ -41,6 +41,10 @@ public:
   /// pi <- the warm start from the previous step's pi where rho~* > 1, else 0 (METHOD.md §6.7, §10).
   void warmStart(const StepContext& ctx) const;
 
+  /// p = pi rho^2 / rho^max of every particle of `sets` from the pi and densities they hold, as solve() leaves it
+  /// (after a restore: the snapshot does not copy p).
+  static void formPressures(ParticleSystem& particles, const std::vector<std::size_t>& sets);
+
   /// The particle left most compressed by the last solve (set, index), for messages when it did not converge.
   static std::pair<std::size_t, std::size_t> mostCompressed(const ParticleSystem& particles,
                                                             const std::vector<std::size_t>& sets);

@@ -711,6 +711,7 @@ void Solver::checkHealth(const Writer& write) {
                    whatToChange() + ".");
     } else {
       snapshot_.restore(particles_, state_);
+      PressureSolver::formPressures(particles_, dynamicSets_);
       msg << ". The step is undone. To continue: " << whatToChange()
           << ", then run again with startFrom latestTime; or set health.nonFinite: remove in system/solverDict.";
       stopAfterWriting(write, msg.str());
@@ -822,7 +823,9 @@ RunOutcome Solver::run(const Writer& write, const Monitor& afterStep, const Obse
                                                     field::fixed, field::restPosition, field::sampledFixed};
       static const std::vector<std::string> none;
       const std::vector<std::string>& kept = ghosts_ || sortsThisStep() ? none : setOnce; // a reference, not a copy
-      snapshot_.take(particles_, dynamicSets_, state_, kept);
+      // p is pi rho^2 / rho^max of two copied fields: formed again after a restore (checkHealth), not copied.
+      static const std::vector<std::string> formedAgain{field::pressure};
+      snapshot_.take(particles_, dynamicSets_, state_, kept, formedAgain);
     }
     step(dt);
     logProgress(clock.seconds(), startTime);

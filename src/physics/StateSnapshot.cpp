@@ -21,8 +21,11 @@ template <class T, class Variant> void copyInto(Variant& to, const std::vector<T
 
 } // namespace
 
-void StateSnapshot::take(const ParticleSystem& particles, const std::vector<std::size_t>& sets,
-                         const RunState& state, const std::vector<std::string>& keptInPlace) {
+void StateSnapshot::take(const ParticleSystem& particles, const std::vector<std::size_t>& sets, const RunState& state,
+                         const std::vector<std::string>& keptInPlace, const std::vector<std::string>& formedAgain) {
+  const auto named = [](const std::vector<std::string>& names, const std::string& name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+  };
   state_ = state;
   sets_.resize(sets.size());
   for (std::size_t k = 0; k < sets.size(); ++k) {
@@ -32,8 +35,7 @@ void StateSnapshot::take(const ParticleSystem& particles, const std::vector<std:
     copy.size = set.size();
     std::size_t n = 0;
     for (const auto& info : set.fields()) {
-      if (!(info.role & Output) || std::find(keptInPlace.begin(), keptInPlace.end(), info.name) != keptInPlace.end())
-        continue;
+      if (!(info.role & Output) || named(keptInPlace, info.name) || named(formedAgain, info.name)) continue;
       if (n == copy.fields.size()) copy.fields.emplace_back();
       Field& field = copy.fields[n++];
       field.name = info.name;

@@ -17,9 +17,10 @@ class StateSnapshot {
 public:
   /// Copies the output fields of `sets`; storage is reused from step to step. `keptInPlace` names fields the
   /// coming step does not write and whose order it keeps (no reordering, no removal): they are not copied, and
-  /// restore() leaves them as they are.
+  /// restore() leaves them as they are. `formedAgain` names fields the caller forms again from the others after
+  /// restore(): they are not copied either.
   void take(const ParticleSystem& particles, const std::vector<std::size_t>& sets, const RunState& state,
-            const std::vector<std::string>& keptInPlace = {});
+            const std::vector<std::string>& keptInPlace = {}, const std::vector<std::string>& formedAgain = {});
   /// Puts the copied fields (and particle counts) back.
   void restore(ParticleSystem& particles, RunState& state) const;
   /// Frees the copies (the next take() allocates them again): a step found healthy needs them no more.

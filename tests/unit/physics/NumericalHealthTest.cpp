@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace poro {
 namespace {
 
@@ -37,15 +39,17 @@ TimeControl steps(int n, int writeEvery = 1000) {
   return control;
 }
 
-/// What a writer saw: the step and positions of every write.
+/// What a writer saw: the step, positions and pressures of every write.
 struct Writes {
   std::vector<long long> steps;
   std::vector<std::vector<Vec3>> positions;
+  std::vector<std::vector<double>> pressures;
   Solver::Writer writer() {
     return [this](const Solver& s) {
       if (s.state().step == 0) return; // the start's rewrite of 0/ (Solver::run), not a write these tests check
       steps.push_back(s.state().step);
       positions.push_back(s.particles()[0].x());
+      pressures.push_back(s.particles()[0].real(field::pressure));
     };
   }
 };
@@ -120,6 +124,26 @@ TEST(Health, NaNUndoesTheStepAndWritesTheLastFiniteState) {
       << message;
   EXPECT_NE(message.find("reduce deltaT (now 0.001 s) in system/controlDict"), std::string::npos) << message;
   EXPECT_NE(message.find("is written"), std::string::npos) << message;
+}
+
+TEST(Health, NaNUndoesTheStepAndWritesThePressuresBefore) {
+  // The snapshot does not copy p: it is formed again from the restored pi and densities, and must be the p of the
+  // last finite state to the bit. The block is squeezed (velocities towards its centre), so that p is not zero.
+  const auto squeezed = [] {
+    ParticleSystem ps = waterBlock();
+    for (std::size_t i = 0; i < ps[0].size(); ++i) ps[0].v()[i] = -20.0 * (ps[0].x()[i] - Vec3::Constant(0.08));
+    return ps;
+  };
+  Solver reference(squeezed(), FluidProperties{}, {}, SolverSettings{}, steps(2), RunState{});
+  reference.run([](const Solver&) {});
+  const auto& p = reference.particles()[0].real(field::pressure);
+  ASSERT_GT(*std::max_element(p.begin(), p.end()), 0.0) << "no pressure to check";
+  Solver solver(squeezed(), FluidProperties{}, {}, SolverSettings{}, steps(10), RunState{});
+  solver.injectNaN(3);
+  Writes writes;
+  runExpectingStop(solver, writes);
+  ASSERT_EQ(writes.steps, std::vector<long long>{2});
+  EXPECT_EQ(writes.pressures[0], p);
 }
 
 TEST(Health, NaNRightAfterAWriteIsNotWrittenTwice) {
