@@ -108,9 +108,12 @@ void Elasticity::prepareBody(const StepContext& ctx, Body& body) {
   const double volumetricModulus = ctx.compatibility.unitLambdaVolumetricStress ? 1.0 : lambda;
   const double bloating = material.bloating * (ctx.compatibility.lambdaScaledBloating ? lambda : 1.0);
   body.uniformModuli = material.shearSoftening == 0.0 && material.volumeSoftening == 0.0;
+  body.mu = mu;
+  body.volumetricModulus = volumetricModulus;
+  body.shearSoftening = material.shearSoftening;
+  body.volumeSoftening = material.volumeSoftening;
+  body.saturation = saturation.data();
 
-  body.shear.resize(n);
-  body.volumetric.resize(n);
   body.stress.resize(n);
   body.stressOfPositions = true;
   body.stressed.clear();
@@ -130,12 +133,18 @@ void Elasticity::prepareBody(const StepContext& ctx, Body& body) {
     rotation[s] = extractRotation(f, rotation[s]);
     const Mat3 rl = rotation[s] * rest.correction(s);
     const Mat3 strain = positionStrain(rest, x, restX, s, f, rotation[s]);
-    const double sat = saturation[s];
-    body.shear[s] = std::max(1.0 + material.shearSoftening * sat, kLameFloor) * mu;
-    body.volumetric[s] = std::max(1.0 + material.volumeSoftening * sat, kLameFloor) * volumetricModulus;
-    const Mat3 stress = stressOf(strain, body.shear[s], body.volumetric[s]) - (bloating * sat) * Mat3::Identity();
+    const Mat3 stress =
+        stressOf(strain, body.shear(s), body.volumetric(s)) - (bloating * saturation[s]) * Mat3::Identity();
     body.stress[s] = rest.volume(s) * (stress * rl);
   });
+}
+
+double Elasticity::Body::shear(std::size_t s) const {
+  return std::max(1.0 + shearSoftening * saturation[s], kLameFloor) * mu;
+}
+
+double Elasticity::Body::volumetric(std::size_t s) const {
+  return std::max(1.0 + volumeSoftening * saturation[s], kLameFloor) * volumetricModulus;
 }
 
 Mat3 Elasticity::strain(std::size_t s, std::size_t i) const {
@@ -180,7 +189,7 @@ void Elasticity::addApply(const linalg::BlockVector& u, const linalg::BlockVecto
       }
       const Mat3 rl = rotation[s] * rest.correction(s);
       const Mat3 eps = symmetric(dt * gradient * rl.transpose());
-      body.stress[s] = rest.volume(s) * (stressOf(eps, body.shear[s], body.volumetric[s]) * rl);
+      body.stress[s] = rest.volume(s) * (stressOf(eps, body.shear(s), body.volumetric(s)) * rl);
     });
     parallel::forEach(n, [&](std::size_t s) { out[s] -= dt * force(body, body.stress, s); });
   }
@@ -200,8 +209,7 @@ void Elasticity::addDiagonal(const linalg::BlockDiagonal& d) const {
       const double v0 = rest.volume(s);
       const Mat3 moment = rest.neighbourMoment(s);
       // The neighbours' sum is at most dt^2 V0_s^2 (2 k_mu mu + k_lambda lambda) tr(S_s) in norm.
-      const double share =
-          dt2 * v0 * v0 * (2.0 * body.shear[s] + body.volumetric[s]) * moment.trace() / mass;
+      const double share = dt2 * v0 * v0 * (2.0 * body.shear(s) + body.volumetric(s)) * moment.trace() / mass;
       Mat3 neighbours;
       if (body.uniformModuli && share <= kNeighbourShareFromRest) {
         // With the neighbours' rotations taken as s's own (their moduli are s's: the material does not soften): B is
@@ -209,8 +217,8 @@ void Elasticity::addDiagonal(const linalg::BlockDiagonal& d) const {
         // at rest. Exact for a body that turns as a whole; elsewhere off by 4 sin(delta / 2) share m at most for
         // neighbours turned by delta against s, which the mass outweighs: the CG reaches the same tolerance.
         const Mat3& r = rotation[s];
-        neighbours = (body.shear[s] + body.volumetric[s]) * (r * moment * r.transpose());
-        neighbours.diagonal().array() += body.shear[s] * moment.trace();
+        neighbours = (body.shear(s) + body.volumetric(s)) * (r * moment * r.transpose());
+        neighbours.diagonal().array() += body.shear(s) * moment.trace();
       } else {
         // B is quadratic in g, so V0_t B_t(g_ts) = B_t(V0_t g_ts) / V0_t with the stored weighted gradients; the
         // identity parts of the blocks are summed as one scalar.
@@ -220,13 +228,13 @@ void Elasticity::addDiagonal(const linalg::BlockDiagonal& d) const {
           const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
           const Vec3 gts = (rotation[t] * rest.correction(t)) * rest.weightedGradient(pair);
           const double inverseVolume = rest.inverseVolume(t);
-          identityPart += body.shear[t] * inverseVolume * gts.squaredNorm();
-          addOuter(neighbours, ((body.shear[t] + body.volumetric[t]) * inverseVolume) * gts, gts);
+          identityPart += body.shear(t) * inverseVolume * gts.squaredNorm();
+          addOuter(neighbours, ((body.shear(t) + body.volumetric(t)) * inverseVolume) * gts, gts);
         }
         neighbours.diagonal().array() += identityPart;
       }
       const Vec3 g = (rotation[s] * rest.correction(s)) * rest.gradientSum(s);
-      out[k] += dt2 * (v0 * stiffnessBlock(g, body.shear[s], body.volumetric[s]) + v0 * v0 * neighbours);
+      out[k] += dt2 * (v0 * stiffnessBlock(g, body.shear(s), body.volumetric(s)) + v0 * v0 * neighbours);
     });
   }
 }

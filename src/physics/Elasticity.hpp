@@ -42,9 +42,13 @@ private:
   /// One elastic porous set and its per-step coefficients.
   struct Body {
     std::size_t set = 0, part = 0;
-    std::vector<double> shear;           ///< k_mu mu [Pa]
-    std::vector<double> volumetric;      ///< k_lambda lambda (or k_lambda with unitLambda) [Pa]
-    bool uniformModuli = true;           ///< no saturation softening: every particle has the material's moduli
+    /// k_mu mu and k_lambda lambda (or k_lambda with unitLambda) [Pa] of particle s, formed from its saturation
+    /// where they are read: the saturation does not change within a step, and two arrays fewer are kept.
+    double mu = 0.0, volumetricModulus = 0.0, shearSoftening = 0.0, volumeSoftening = 0.0;
+    const double* saturation = nullptr;
+    double shear(std::size_t s) const;
+    double volumetric(std::size_t s) const;
+    bool uniformModuli = true; ///< no saturation softening: every particle has the material's moduli
     /// V0_s P_s R_s L_s: of the position part (with bloating) after prepare(), read by addRhs(); then of the
     /// velocity part, formed by every addApply(). One array for both: the right-hand side is formed before the CG
     /// applies the operator, and each holds 72 bytes per particle. (R_s L_s itself is formed where it is used, 27
