@@ -32,12 +32,27 @@ template <class G> void sortUnique(std::vector<G>& values) {
   values.erase(std::unique(values.begin(), values.end(), [](const G& a, const G& b) { return !bitsBefore(a, b); }),
                values.end());
 }
+/// Sum over i of a mix of (ids[i], i), modulo 2^64: a change of order or of any id changes it but with a chance of
+/// 2^-64. The mix is SplitMix64's finaliser (Steele, Lea, Flood 2014), which spreads every input bit over the word.
+std::uint64_t orderFingerprint(const std::vector<std::int64_t>& ids) {
+  const auto mix = [](std::uint64_t z) {
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  };
+  return parallel::sum<std::uint64_t>(ids.size(), [&](std::size_t i) {
+    return mix(mix(static_cast<std::uint64_t>(ids[i])) + 0x9e3779b97f4a7c15ULL * (i + 1));
+  });
+}
 } // namespace
 
 bool ElasticRestState::update(const ParticleSet& set, const CubicKernel& kernel) {
   const auto& ids = set.integer(field::id);
-  if (!volume_.empty() && ids == ids_) return false;
+  const std::uint64_t fingerprint = orderFingerprint(ids);
+  if (!volume_.empty() && ids.size() == idsCount_ && fingerprint == idsFingerprint_) return false;
   build(set, kernel);
+  idsFingerprint_ = fingerprint;
+  idsCount_ = ids.size();
   return true;
 }
 
@@ -46,7 +61,6 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
   const auto& rest = set.vec3(field::restPosition);
   const auto& ids = set.integer(field::id);
   const auto& objects = set.integer(field::objectId);
-  ids_ = ids;
 
   NeighbourSearch search(kernel.supportRadius());
   search.update({&rest}, {{true}});

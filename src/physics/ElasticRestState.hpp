@@ -60,7 +60,11 @@ public:
 private:
   void build(const ParticleSet& set, const CubicKernel& kernel);
 
-  std::vector<std::int64_t> ids_; ///< persistent ids in the order of the last build
+  /// The ids in their order at the last build, as a 64-bit fingerprint (orderFingerprint()) and a count: a reorder,
+  /// a removal or a restart changes them. Two different orders give the same fingerprint with a chance of 2^-64;
+  /// the ids themselves would take 8 bytes per particle.
+  std::uint64_t idsFingerprint_ = 0;
+  std::size_t idsCount_ = 0;
   std::vector<std::int64_t> offsets_;
   std::vector<Index> neighbours_;
   /// gradW(X_s - X_t) per pair in single precision, like the other pair data (PairFactor), and V0_t applied in

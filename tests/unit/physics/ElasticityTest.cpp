@@ -11,6 +11,7 @@
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <random>
 
 namespace poro {
@@ -156,6 +157,36 @@ TEST(ElasticRestState, RestGradientsOfAnIrregularBodyAreKeptPerPairWhenTooManyTo
   ASSERT_GT(rest.end(rest.size() - 1), std::size_t(1) << 16);
   EXPECT_EQ(rest.sharedGradients(), 0u);
   expectRestGradientsAsComputed(rest, solver.particles()[0].vec3(field::restPosition), ctx.kernel);
+}
+
+TEST_F(ElasticBlock, RestStateIsRebuiltWhenTheParticlesAreReorderedOrRemoved) {
+  // Its pairs are indices into the set's order: a reordering (Morton sort), a removal or other ids (a restart)
+  // must rebuild them, and nothing else need.
+  build(rubber());
+  begin();
+  const CubicKernel& kernel = ctx_->kernel;
+  ElasticRestState rest;
+  ASSERT_TRUE(rest.update(set(), kernel));
+  EXPECT_FALSE(rest.update(set(), kernel)) << "nothing changed";
+  const auto& ids = set().integer(field::id);
+  const auto neighbourIds = [&](std::size_t s) {
+    std::vector<std::int64_t> out;
+    for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair)
+      out.push_back(ids[static_cast<std::size_t>(rest.neighbour(pair))]);
+    return out;
+  };
+  const std::vector<std::int64_t> ofSeven = neighbourIds(7);
+  std::vector<Index> order(set().size());
+  std::iota(order.begin(), order.end(), Index{0});
+  std::swap(order[3], order[7]); // two particles trade places
+  set().permute(order);
+  EXPECT_TRUE(rest.update(set(), kernel));
+  EXPECT_EQ(neighbourIds(3), ofSeven);
+  EXPECT_FALSE(rest.update(set(), kernel));
+  set().remove({0});
+  EXPECT_TRUE(rest.update(set(), kernel));
+  set().integer(field::id)[5] += 100000;
+  EXPECT_TRUE(rest.update(set(), kernel));
 }
 
 TEST_F(ElasticBlock, ShepardRestVolumesMatchTheLatticeTable) {
