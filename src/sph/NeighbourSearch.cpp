@@ -43,31 +43,59 @@ void sortAscending(Index* first, Index* last) {
   }
 }
 
-/// Bit t of the result: whether sorted particle start + t (t < n <= 64) is closer than sqrt(radius2) to p.
-/// Four at a time with AVX2, reading up to three past n (into the next cell or SortedCoordinates' padding).
+/// Bit t of the result: whether sorted particle start + t (t < n <= 64) is closer than sqrt(radius2) to p, p
+/// relative to the grid's origin like the sorted coordinates. With AVX2 four doubles or eight floats at a time,
+/// reading up to seven past n (into the next cell or the padding).
 template <class Coordinates>
 std::uint64_t withinMask(const Coordinates& sorted, std::size_t start, std::size_t n, const Vec3& p, double radius2) {
-  const double* const x = sorted.x.data() + start;
-  const double* const y = sorted.y.data() + start;
-  const double* const z = sorted.z.data() + start;
+  using T = typename decltype(Coordinates::x)::value_type;
+  const T* const x = sorted.x.data() + start;
+  const T* const y = sorted.y.data() + start;
+  const T* const z = sorted.z.data() + start;
   std::uint64_t mask = 0;
 #if defined(__AVX2__)
-  const __m256d px = _mm256_set1_pd(p.x()), py = _mm256_set1_pd(p.y()), pz = _mm256_set1_pd(p.z());
-  const __m256d r2 = _mm256_set1_pd(radius2);
-  for (std::size_t t = 0; t < n; t += 4) {
-    const __m256d dx = _mm256_sub_pd(px, _mm256_loadu_pd(x + t));
-    const __m256d dy = _mm256_sub_pd(py, _mm256_loadu_pd(y + t));
-    const __m256d dz = _mm256_sub_pd(pz, _mm256_loadu_pd(z + t));
-    const __m256d d2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
-    mask |= static_cast<std::uint64_t>(_mm256_movemask_pd(_mm256_cmp_pd(d2, r2, _CMP_LT_OQ))) << t;
+  if constexpr (std::is_same_v<T, float>) {
+    const __m256 px = _mm256_set1_ps(static_cast<float>(p.x())), py = _mm256_set1_ps(static_cast<float>(p.y())),
+                 pz = _mm256_set1_ps(static_cast<float>(p.z()));
+    const __m256 r2 = _mm256_set1_ps(static_cast<float>(radius2));
+    for (std::size_t t = 0; t < n; t += 8) {
+      const __m256 dx = _mm256_sub_ps(px, _mm256_loadu_ps(x + t));
+      const __m256 dy = _mm256_sub_ps(py, _mm256_loadu_ps(y + t));
+      const __m256 dz = _mm256_sub_ps(pz, _mm256_loadu_ps(z + t));
+      const __m256 d2 =
+          _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy)), _mm256_mul_ps(dz, dz));
+      mask |= static_cast<std::uint64_t>(_mm256_movemask_ps(_mm256_cmp_ps(d2, r2, _CMP_LT_OQ))) << t;
+    }
+  } else {
+    const __m256d px = _mm256_set1_pd(p.x()), py = _mm256_set1_pd(p.y()), pz = _mm256_set1_pd(p.z());
+    const __m256d r2 = _mm256_set1_pd(radius2);
+    for (std::size_t t = 0; t < n; t += 4) {
+      const __m256d dx = _mm256_sub_pd(px, _mm256_loadu_pd(x + t));
+      const __m256d dy = _mm256_sub_pd(py, _mm256_loadu_pd(y + t));
+      const __m256d dz = _mm256_sub_pd(pz, _mm256_loadu_pd(z + t));
+      const __m256d d2 =
+          _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
+      mask |= static_cast<std::uint64_t>(_mm256_movemask_pd(_mm256_cmp_pd(d2, r2, _CMP_LT_OQ))) << t;
+    }
   }
 #else
+  const T px = static_cast<T>(p.x()), py = static_cast<T>(p.y()), pz = static_cast<T>(p.z());
+  const T r2 = static_cast<T>(radius2);
   for (std::size_t t = 0; t < n; ++t) {
-    const double dx = p.x() - x[t], dy = p.y() - y[t], dz = p.z() - z[t];
-    mask |= static_cast<std::uint64_t>(dx * dx + dy * dy + dz * dz < radius2) << t;
+    const T dx = px - x[t], dy = py - y[t], dz = pz - z[t];
+    mask |= static_cast<std::uint64_t>(dx * dx + dy * dy + dz * dz < r2) << t;
   }
 #endif
   return n == 64 ? mask : mask & ((std::uint64_t(1) << n) - 1);
+}
+
+/// The squared radius at which the float test of the candidates keeps every pair closer than `radius` (and a few
+/// farther): coordinates up to `extent` from the grid's origin are rounded by at most 2^-24 of it, p and the
+/// difference too, so a distance is off by at most sqrt(3) 2^-24 (2 extent + radius); the squares and their sum
+/// add a few float roundings (the factor).
+double floatTestRadius2(double radius, double extent) {
+  const double widened = radius + std::sqrt(3.0) * 0x1p-24 * (2.0 * extent + radius);
+  return widened * widened * (1.0 + 0x1p-20);
 }
 
 /// Writes to dst the indices index[k] of the sorted particles k in [first, last) closer than sqrt(radius2) to p,
@@ -290,7 +318,7 @@ void NeighbourSearch::sortMovers(const std::vector<const std::vector<Vec3>*>& po
     if (movers_[s].empty())
       moverCells_[s].cellStart.clear(); // nothing to visit
     else
-      sortIntoCells(moverX[s], moverGrid_, moverCells_[s], nullptr);
+      sortIntoCells(moverX[s], moverGrid_, moverCells_[s]);
   }
 }
 
@@ -452,8 +480,7 @@ std::size_t NeighbourSearch::findMovers(const std::vector<const std::vector<Vec3
   return total;
 }
 
-void NeighbourSearch::sortIntoCells(const std::vector<Vec3>& xs, const CellGrid& grid, CellSort& cells,
-                                    SortedCoordinates* inOrder) {
+void NeighbourSearch::sortIntoCells(const std::vector<Vec3>& xs, const CellGrid& grid, CellSort& cells) {
   const std::int64_t nx = grid.dims[0], ny = grid.dims[1], nz = grid.dims[2];
   const std::int64_t nCells = nx * ny * nz;
   const double invCell = 1.0 / grid.cellSize;
@@ -471,20 +498,23 @@ void NeighbourSearch::sortIntoCells(const std::vector<Vec3>& xs, const CellGrid&
   for (std::int64_t c = 0; c < nCells; ++c) cells.cellStart[c + 1] += cells.cellStart[c];
   std::vector<std::int64_t> fill(cells.cellStart.begin(), cells.cellStart.end() - 1);
   cells.index.resize(n);
-  for (std::size_t i = 0; i < n; ++i) cells.index[static_cast<std::size_t>(fill[static_cast<std::size_t>(cell[i])]++)] =
-      static_cast<Index>(i);
-  if (inOrder) {
-    // Padded: the distance tests read whole vectors of four (keepWithin()).
-    inOrder->x.assign(n + 3, 0.0);
-    inOrder->y.assign(n + 3, 0.0);
-    inOrder->z.assign(n + 3, 0.0);
-    parallel::forEach(n, [&](std::size_t k) {
-      const Vec3& p = xs[static_cast<std::size_t>(cells.index[k])];
-      inOrder->x[k] = p.x();
-      inOrder->y[k] = p.y();
-      inOrder->z[k] = p.z();
-    });
-  }
+  for (std::size_t i = 0; i < n; ++i)
+    cells.index[static_cast<std::size_t>(fill[static_cast<std::size_t>(cell[i])]++)] = static_cast<Index>(i);
+}
+
+template <class T>
+void NeighbourSearch::gatherInOrder(const std::vector<Vec3>& xs, const Vec3& origin, const CellSort& cells,
+                                    SortedCoordinates<T>& out) {
+  const std::size_t n = cells.index.size();
+  out.x.assign(n + kCoordinatePadding, T(0));
+  out.y.assign(n + kCoordinatePadding, T(0));
+  out.z.assign(n + kCoordinatePadding, T(0));
+  parallel::forEach(n, [&](std::size_t k) {
+    const Vec3 p = xs[static_cast<std::size_t>(cells.index[k])] - origin;
+    out.x[k] = static_cast<T>(p.x());
+    out.y[k] = static_cast<T>(p.y());
+    out.z[k] = static_cast<T>(p.z());
+  });
 }
 
 template <class List>
@@ -496,7 +526,12 @@ void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positio
   const CellGrid grid = makeGrid(positions, radius);
   const std::int64_t nx = grid.dims[0], ny = grid.dims[1], nz = grid.dims[2];
   const double invCell = 1.0 / grid.cellSize;
-  const double radius2 = radius * radius;
+  double extent = 0.0;
+  for (int d = 0; d < 3; ++d) extent = std::max(extent, static_cast<double>(grid.dims[d]) * grid.cellSize);
+  const double radius2 = ascending ? floatTestRadius2(radius, extent) : radius * radius;
+  // Float coordinates are taken relative to the grid's origin, which keeps their rounding to the grid's extent. The
+  // lists at H test in double, as filterCandidates() does: there x - 0 and p - 0 are exact.
+  const Vec3 origin = ascending ? grid.origin : Vec3::Zero();
 
   auto cellOf = [&](const Vec3& p) {
     CellIndex c{static_cast<std::int64_t>((p.x() - grid.origin.x()) * invCell),
@@ -520,8 +555,9 @@ void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positio
       searchedIn = searchedIn || wanted[a][b];
     }
     if (!needed) continue;
-    SortedCoordinates sx;
-    sortIntoCells(*positions[b], grid, sorted[b], searchedIn ? &sx : nullptr);
+    SortedCoordinates<std::conditional_t<ascending, float, double>> sx;
+    sortIntoCells(*positions[b], grid, sorted[b]);
+    if (searchedIn) gatherInOrder(*positions[b], origin, sorted[b], sx);
     const CellSort& s = sorted[b];
     for (std::size_t a = 0; a < sets_; ++a) {
       if (!wanted[a][b]) continue;
@@ -531,6 +567,7 @@ void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positio
       const auto find = [&](std::size_t i, IndexBuffer& out) {
         const Vec3& p = xa[i];
         const CellIndex c = cellOf(p);
+        const Vec3 fromOrigin = p - origin;
         const Index skipped = self ? static_cast<Index>(i) : Index(-1);
         // The x-neighbours of one (y, z) row are consecutive cells: one contiguous range of the sorted particles.
         // In the Morton order of these cells (mortonOrder()) a row's cells are runs of consecutive indices, so
@@ -551,8 +588,8 @@ void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positio
         Index* const dst = out.data() + before;
         std::size_t kept = 0;
         for (int r = 0; r < rows; ++r)
-          kept += keepWithin(sx, s.index.data(), static_cast<std::size_t>(first[r]), static_cast<std::size_t>(last[r]), p,
-                             radius2, skipped, dst + kept);
+          kept += keepWithin(sx, s.index.data(), static_cast<std::size_t>(first[r]), static_cast<std::size_t>(last[r]),
+                             fromOrigin, radius2, skipped, dst + kept);
         out.resize(before + kept);
       };
       if constexpr (ascending) {

@@ -96,7 +96,7 @@ private:
   /// About half the bytes of indices: the candidates outnumber the lists at H by a third and live beside them from
   /// one grid search to the next (25 MB less for the published Seep at r = 1 cm).
   struct CandidateList {
-    std::vector<std::uint32_t> offsets_; ///< particle i's codes are indices_[offsets_[i] .. offsets_[i + 1])
+    std::vector<std::uint32_t> offsets_;   ///< particle i's codes are indices_[offsets_[i] .. offsets_[i + 1])
     ReallocVector<std::uint16_t> indices_; ///< the codes (named like NeighbourList's, which assemble() fills alike)
   };
   using CodeBuffer = std::vector<std::uint16_t, UninitialisedAllocator<std::uint16_t>>;
@@ -134,13 +134,18 @@ private:
   /// grid search, and (withMovers) b's movers; `self` (skipped) is p's index when p is of set b, else -1.
   void searchAround(const std::vector<const std::vector<Vec3>*>& positions, std::size_t b, const Vec3& p,
                     std::int64_t self, bool withMovers, IndexBuffer& out) const;
-  /// Positions in the order of a CellSort, one array per coordinate: the grid search's distance tests vectorise.
-  struct SortedCoordinates {
-    std::vector<double> x, y, z;
-  };
-  /// Sorts positions xs (all inside `grid`) by cell; `inOrder` (if given) gets them in that order.
-  static void sortIntoCells(const std::vector<Vec3>& xs, const CellGrid& grid, CellSort& cells,
-                            SortedCoordinates* inOrder);
+  /// Positions in the order of a CellSort, one array per coordinate, padded by kCoordinatePadding: the grid
+  /// search's distance tests vectorise. In double for lists at H; in float, relative to the grid's origin, for the
+  /// candidates, which may then hold a few pairs beyond H + skin (the lists filter them exactly): half the memory
+  /// while the grid search runs, and twice the tests per instruction.
+  template <class T> struct SortedCoordinates { std::vector<T> x, y, z; };
+  static constexpr std::size_t kCoordinatePadding = 7;
+  /// Sorts positions xs (all inside `grid`) by cell.
+  static void sortIntoCells(const std::vector<Vec3>& xs, const CellGrid& grid, CellSort& cells);
+  /// The positions xs relative to `origin` in the order of `cells`.
+  template <class T>
+  static void gatherInOrder(const std::vector<Vec3>& xs, const Vec3& origin, const CellSort& cells,
+                            SortedCoordinates<T>& out);
   /// Particles of set a that get lists in this update.
   std::size_t listedOf(std::size_t a, std::size_t size) const {
     return a < listed_.size() ? std::min(listed_[a], size) : size;
@@ -155,15 +160,15 @@ private:
   double skin_;
   std::size_t sets_ = 0;
   std::vector<NeighbourList> lists_;
-  std::vector<CandidateList> candidates_;      ///< lists at H + skin from the last grid search
+  std::vector<CandidateList> candidates_; ///< lists at H + skin from the last grid search
   /// Positions at the last grid search, in single precision: they only tell movers, with the rounding added to the
   /// distance moved (findMovers()).
   std::vector<std::vector<Eigen::Vector3f>> builtAt_;
-  std::vector<std::vector<bool>> builtWanted_; ///< the lists requested then
-  std::vector<std::size_t> listed_;            ///< this update's `listed`
-  std::vector<std::size_t> builtListed_;       ///< the candidates' `listed`
-  CellGrid builtGrid_;                         ///< the grid of the last grid search at H + skin
-  std::vector<CellSort> builtCells_;           ///< every searched set sorted into it, by the positions then
+  std::vector<std::vector<bool>> builtWanted_;     ///< the lists requested then
+  std::vector<std::size_t> listed_;                ///< this update's `listed`
+  std::vector<std::size_t> builtListed_;           ///< the candidates' `listed`
+  CellGrid builtGrid_;                             ///< the grid of the last grid search at H + skin
+  std::vector<CellSort> builtCells_;               ///< every searched set sorted into it, by the positions then
   std::vector<std::vector<std::uint8_t>> isMover_; ///< per set, 1 for a mover (empty while the set has none)
   std::vector<std::vector<Index>> movers_;         ///< per set, its movers in ascending order
   CellGrid moverGrid_;                             ///< a grid of cells H + skin over the movers' positions now

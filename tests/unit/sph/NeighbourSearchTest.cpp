@@ -342,7 +342,8 @@ TEST(NeighbourSearch, MortonOrderWithASkinGroupsTheGridSearchsCells) {
   std::uniform_real_distribution<double> jitter(0.1 * cell, 0.9 * cell);
   Positions x(3000);
   for (auto& p : x)
-    p = Vec3((index(rng) + 3) * cell + jitter(rng), (index(rng) - 5) * cell + jitter(rng), index(rng) * cell + jitter(rng));
+    p = Vec3((index(rng) + 3) * cell + jitter(rng), (index(rng) - 5) * cell + jitter(rng),
+             index(rng) * cell + jitter(rng));
   const std::vector<Index> order = NeighbourSearch(h, skin).mortonOrder(x);
   std::map<std::array<long long, 3>, std::size_t> lastSeen; // cell -> position in the order
   for (std::size_t n = 0; n < order.size(); ++n) {
@@ -502,7 +503,7 @@ TEST(NeighbourSearch, CandidatesFarApartInIndexKeepTheirLists) {
   Positions wall = randomPoints(n, Vec3(1.0, 1.0, 1.0), Vec3(1.3, 1.3, 1.3), 21); // far from the fluid
   const Vec3 first(0.1, 0.1, 0.1), second(0.5, 0.5, 0.5);
   const std::vector<std::size_t> nearFirst{0, 1, 65536, 131072, 131073, n - 1}; // steps 65535, 65536, 68926
-  const std::vector<std::size_t> nearSecond{70000, 140000, 140001};            // the first beyond 2^16
+  const std::vector<std::size_t> nearSecond{70000, 140000, 140001};             // the first beyond 2^16
   for (std::size_t k = 0; k < nearFirst.size(); ++k) wall[nearFirst[k]] = first + Vec3(0.003 * k, 0.0, 0.0);
   for (std::size_t k = 0; k < nearSecond.size(); ++k) wall[nearSecond[k]] = second + Vec3(0.0, 0.003 * k, 0.0);
   Positions fluid{first + Vec3(0.0, 0.01, 0.0), second + Vec3(0.01, 0.0, 0.0), Vec3(0.3, 0.3, 0.3)};
@@ -546,6 +547,37 @@ TEST(NeighbourSearch, MoversAreFoundThoughTheirStartPositionsAreRounded) {
   search.update(sets, {{true}});
   EXPECT_EQ(search.gridSearches(), 1u) << "two movers among 202 particles use the candidates";
   expectSameSets(toLists(search.list(0, 0)), bruteForce(x, x, h, true), "after the two moved");
+}
+
+// The grid search tests the candidates in float, relative to the grid's origin, so a pair a hair closer than H + skin
+// may round to beyond it. Pairs there whose particles then each move just under skin / 2 towards the other (not
+// movers) must be in the lists: the float test keeps a margin for the rounding. A particle 100 m away puts the pairs
+// 100 m from the origin, where a float is 2^-17 m (7.6 um) coarse, while their own coordinates stay small, so that
+// the movers' test (start positions rounded by 2^-24 of them) finds no movers.
+TEST(NeighbourSearch, CandidatesTestedInFloatKeepPairsAHairWithinHPlusSkin) {
+  const double h = 0.04, skin = 0.1 * h;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  Positions x{Vec3(-100.0, 0.0, 0.0)};
+  std::vector<Vec3> towards;
+  for (int k = 0; k < 100; ++k) {
+    const Vec3 centre = Vec3(0.05, 0.05, 0.05) + 0.4 * Vec3(unit(rng), unit(rng), unit(rng));
+    const Vec3 e = Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5).normalized();
+    const double apart = h + skin - (5e-7 + 1.5e-5 * unit(rng));
+    x.push_back(centre - 0.5 * apart * e);
+    x.push_back(centre + 0.5 * apart * e);
+    towards.push_back(e * (0.5 * (apart - h) + 5e-9)); // then 1e-8 within H
+  }
+  const std::vector<const Positions*> sets{&x};
+  NeighbourSearch search(h, skin);
+  search.update(sets, {{true}});
+  for (std::size_t k = 0; k < towards.size(); ++k) {
+    x[1 + 2 * k] += towards[k];
+    x[2 + 2 * k] -= towards[k];
+  }
+  search.update(sets, {{true}});
+  ASSERT_EQ(search.gridSearches(), 1u) << "no movers: the lists come from the candidates";
+  expectSameSets(toLists(search.list(0, 0)), bruteForce(x, x, h, true), "pairs a hair within H + skin at 100 m");
 }
 
 // With the skin a list is a function of the positions alone: a search with a history and a fresh one list
