@@ -43,9 +43,9 @@ void sortAscending(Index* first, Index* last) {
   }
 }
 
-/// Bit t of the result: whether sorted particle start + t (t < n <= 64) is closer than sqrt(radius2) to p, p
-/// relative to the grid's origin like the sorted coordinates. With AVX2 four doubles or eight floats at a time,
-/// reading up to seven past n (into the next cell or the padding).
+/// Bit t of the result: whether sorted particle start + t (t < n <= 64) is closer than sqrt(radius2) to p, given
+/// in the frame of the sorted coordinates. With AVX2 four doubles or eight floats at a time, reading up to seven
+/// past n (into the next cell or the padding).
 template <class Coordinates>
 std::uint64_t withinMask(const Coordinates& sorted, std::size_t start, std::size_t n, const Vec3& p, double radius2) {
   using T = typename decltype(Coordinates::x)::value_type;
