@@ -427,7 +427,7 @@ void Solver::searchNeighbours(double deltaT) {
   if (ghosts_) ghosts_->drop(particles_); // e.g. those of checkStart's densities
   const bool sortNow = sortsThisStep();
   if (sortNow) {
-    for (std::size_t a : dynamicSets_) particles_[a].permute(search_.mortonOrder(particles_[a].x()));
+    sortIfDue();
     search_.invalidate();
   }
   // How far the bulk of the particles moves this step decides whether the Verlet skin pays. It is measured afresh
@@ -461,8 +461,12 @@ void Solver::searchNeighbours(double deltaT) {
   search_.update(positions, wanted, bulkStep, listed);
 }
 
-bool Solver::sortsThisStep() const {
-  return settings_.sortInterval > 0 && state_.step % settings_.sortInterval == 0;
+bool Solver::sortsThisStep() const { return settings_.sortInterval > 0 && state_.step % settings_.sortInterval == 0; }
+
+void Solver::sortIfDue() {
+  if (!sortsThisStep() || sortedAtStep_ == state_.step) return;
+  for (std::size_t a : dynamicSets_) particles_[a].permute(search_.mortonOrder(particles_[a].x()));
+  sortedAtStep_ = state_.step;
 }
 
 bool Solver::skinHoldsOnEveryRank() const {
@@ -818,11 +822,14 @@ RunOutcome Solver::run(const Writer& write, const Monitor& afterStep, const Obse
     const double dt = stepSizeFor(state_.nextDeltaT);
     {
       ScopedPhase phase(phases_, "health");
-      // Fields set once are moved only by a reordering (or a parallel run's migration): other steps leave them.
-      static const std::vector<std::string> setOnce{field::id,    field::objectId,    field::materialId,
+      // Fields set once are moved only by a reordering or a parallel run's migration, which happen in the step.
+      // A serial run sorts before the snapshot instead: the snapshot holds the sorted state, which is as good to
+      // write and restart from, and a sort step needs no copy of them either.
+      if (!ghosts_) sortIfDue();
+      static const std::vector<std::string> setOnce{field::id,    field::objectId,     field::materialId,
                                                     field::fixed, field::restPosition, field::sampledFixed};
       static const std::vector<std::string> none;
-      const std::vector<std::string>& kept = ghosts_ || sortsThisStep() ? none : setOnce; // a reference, not a copy
+      const std::vector<std::string>& kept = ghosts_ ? none : setOnce; // a reference, not a copy
       // p is pi rho^2 / rho^max of two copied fields: formed again after a restore (checkHealth), not copied.
       static const std::vector<std::string> formedAgain{field::pressure};
       snapshot_.take(particles_, dynamicSets_, state_, kept, formedAgain);

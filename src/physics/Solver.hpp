@@ -97,6 +97,9 @@ private:
   void searchNeighbours(double deltaT);
   /// Whether the coming step puts the particles into Morton order (every sortInterval steps).
   bool sortsThisStep() const;
+  /// Puts the moving particles into Morton order if the coming step is due one and has not had it yet (a second
+  /// sort would only cost time: the order is a stable sort of cells).
+  void sortIfDue();
   /// Parallel runs: whether the Verlet skin still holds over every rank since the last migration (searchOrigin), so
   /// that the ranks keep their particles and ghosts instead of migrating and building a new halo.
   bool skinHoldsOnEveryRank() const;
@@ -162,6 +165,7 @@ private:
   std::optional<Domain> domain_;    ///< particles outside it fail the leaving-domain check
   std::size_t outsideReported_ = 0; ///< particles outside the domain already warned about (policy warn)
   long long lastWrittenStep_ = -1;
+  long long sortedAtStep_ = -1;     ///< the step whose Morton sort is done (sortIfDue)
   bool startChecked_ = false;       ///< checkStart() ran (main calls it before anything is written)
   GhostExchange* ghosts_ = nullptr; ///< a parallel run's ranks, else null
   long long injectNaNStep_ = -1;

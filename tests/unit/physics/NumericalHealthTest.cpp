@@ -146,6 +146,41 @@ TEST(Health, NaNUndoesTheStepAndWritesThePressuresBefore) {
   EXPECT_EQ(writes.pressures[0], p);
 }
 
+TEST(Health, NaNInASortStepWritesTheSortedStateBefore) {
+  // A serial run puts its particles into Morton order before the snapshot of a sort step, so that the snapshot
+  // need not copy the fields set once (ids, rest positions): a step undone there writes the state before it,
+  // sorted, with every particle's fields still its own. Starting at step 1 (no sort at the start), the block is
+  // in lattice order until step 2 sorts it.
+  SolverSettings settings;
+  settings.sortInterval = 2;
+  const RunState atStep1{kDt, 1, kDt};
+  Solver reference(waterBlock(), FluidProperties{}, {}, settings, steps(2), atStep1);
+  reference.run([](const Solver&) {});
+  Solver solver(waterBlock(), FluidProperties{}, {}, settings, steps(10), atStep1);
+  solver.injectNaN(3);
+  std::vector<std::int64_t> ids;
+  std::vector<Vec3> x, v;
+  try {
+    solver.run([&](const Solver& s) {
+      ids = s.particles()[0].integer(field::id);
+      x = s.particles()[0].x();
+      v = s.particles()[0].v();
+    });
+    ADD_FAILURE() << "the run did not stop";
+  } catch (const NumericalError&) {
+  }
+  ASSERT_EQ(solver.state().step, 2);
+  const ParticleSet& before = reference.particles()[0];
+  ASSERT_EQ(ids.size(), before.size());
+  ASSERT_NE(ids, before.integer(field::id)) << "step 2 did not reorder the block: the test shows nothing";
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    const auto k = static_cast<std::size_t>(ids[i]); // waterBlock's ids are its lattice indices
+    ASSERT_EQ(before.integer(field::id)[k], ids[i]);
+    EXPECT_EQ(x[i], before.x()[k]) << "id " << ids[i];
+    EXPECT_EQ(v[i], before.v()[k]) << "id " << ids[i];
+  }
+}
+
 TEST(Health, NaNRightAfterAWriteIsNotWrittenTwice) {
   Solver solver(waterBlock(), FluidProperties{}, {}, SolverSettings{}, steps(10, 2), RunState{});
   solver.injectNaN(3);
