@@ -62,21 +62,32 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
   const auto& ids = set.integer(field::id);
   const auto& objects = set.integer(field::objectId);
 
-  NeighbourSearch search(kernel.supportRadius());
-  search.update({&rest}, {{true}});
-  const NeighbourList& all = search.list(0, 0);
-
-  // N0: same object only (two bodies of one material that start in contact are not glued), by persistent id.
-  std::vector<std::vector<Index>> lists(n);
-  parallel::forEach(n, [&](std::size_t s) {
-    for (Index t : all.of(s))
-      if (objects[static_cast<std::size_t>(t)] == objects[s]) lists[s].push_back(t);
-    std::sort(lists[s].begin(), lists[s].end(),
-              [&](Index a, Index b) { return ids[static_cast<std::size_t>(a)] < ids[static_cast<std::size_t>(b)]; });
-  });
-  offsets_.assign(n + 1, 0);
-  for (std::size_t s = 0; s < n; ++s) offsets_[s + 1] = offsets_[s] + static_cast<std::int64_t>(lists[s].size());
-  neighbours_.resize(static_cast<std::size_t>(offsets_[n]));
+  // The old state goes first (a rebuild follows a Morton sort, a removal or a restart), and N0 is written straight
+  // into its pairs: no state is held twice, nor the lists a second time per particle. The rebuild comes on top of
+  // everything a step holds, and every sortInterval steps.
+  giveBackMemory();
+  {
+    NeighbourSearch search(kernel.supportRadius());
+    search.update({&rest}, {{true}});
+    const NeighbourList& all = search.list(0, 0);
+    // N0: same object only (two bodies of one material that start in contact are not glued), by persistent id.
+    offsets_.assign(n + 1, 0);
+    parallel::forEach(n, [&](std::size_t s) {
+      std::int64_t count = 0;
+      for (Index t : all.of(s)) count += objects[static_cast<std::size_t>(t)] == objects[s];
+      offsets_[s + 1] = count;
+    });
+    for (std::size_t s = 0; s < n; ++s) offsets_[s + 1] += offsets_[s];
+    neighbours_.resize(static_cast<std::size_t>(offsets_[n]));
+    parallel::forEach(n, [&](std::size_t s) {
+      Index* const first = neighbours_.data() + begin(s);
+      Index* last = first;
+      for (Index t : all.of(s))
+        if (objects[static_cast<std::size_t>(t)] == objects[s]) *last++ = t;
+      std::sort(first, last,
+                [&](Index a, Index b) { return ids[static_cast<std::size_t>(a)] < ids[static_cast<std::size_t>(b)]; });
+    });
+  }
   volume_.resize(n);
   shepard_.resize(n);
   correction_.resize(n);
@@ -84,15 +95,11 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
   gradientSum_.resize(n);
   parallel::forEach(n, [&](std::size_t s) {
     double shepard = kernel.w0();
-    std::size_t pair = begin(s);
-    for (Index t : lists[s]) {
-      shepard += kernel.w(rest[s] - rest[static_cast<std::size_t>(t)]);
-      neighbours_[pair++] = t;
-    }
+    for (std::size_t pair = begin(s); pair < end(s); ++pair)
+      shepard += kernel.w(rest[s] - rest[static_cast<std::size_t>(neighbours_[pair])]);
     shepard_[s] = shepard;
     volume_[s] = 1.0 / shepard;
   });
-  memory::freeAll(lists);
   storeGradients(rest, kernel);
   // Every V0 is known now: sum the moments of the weighted gradients exactly as the terms will read them (rounded).
   parallel::forEach(n, [&](std::size_t s) {
@@ -120,6 +127,19 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
                            static_cast<float>(moment(2, 2)), static_cast<float>(moment(0, 1)),
                            static_cast<float>(moment(0, 2)), static_cast<float>(moment(1, 2))};
   });
+}
+
+void ElasticRestState::giveBackMemory() {
+  memory::freeAll(offsets_);
+  memory::freeAll(neighbours_);
+  memory::freeAll(gradientTable_);
+  memory::freeAll(gradientCodes_);
+  memory::freeAll(volume_);
+  memory::freeAll(shepard_);
+  memory::freeAll(correction_);
+  memory::freeAll(inverts_);
+  memory::freeAll(gradientSum_);
+  memory::freeAll(neighbourMoment_);
 }
 
 void ElasticRestState::storeGradients(const std::vector<Vec3>& rest, const CubicKernel& kernel) {

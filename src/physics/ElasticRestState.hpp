@@ -59,6 +59,8 @@ public:
 
 private:
   void build(const ParticleSet& set, const CubicKernel& kernel);
+  /// Gives every array's memory back.
+  void giveBackMemory();
 
   /// The ids in their order at the last build, as a 64-bit fingerprint (orderFingerprint()) and a count: a reorder,
   /// a removal or a restart changes them. Two different orders give the same fingerprint with a chance of 2^-64;
