@@ -1,7 +1,8 @@
 # Precompiled headers. Eigen, the C++ library and GoogleTest are most of what a translation unit parses: about two
 # thirds of a unit test's compile time, a third of a solver file's. One header set per kind of target is formed once
 # (by poro_core for the libraries and executables, by unit_core for the tests) and reused by every other target of
-# that kind, whose flags are the same. Code generation is unchanged: only the parsing is saved.
+# that kind: GCC takes it where the flags and the definitions it was formed with are the same (-Winvalid-pch warns
+# where not). Code generation is unchanged: only the parsing is saved.
 # -DPOROSPH_PCH=OFF builds without them, which shows a file that uses a header it does not include.
 option(POROSPH_PCH "Precompile the headers most files include (Eigen, the C++ library, GoogleTest)" ON)
 
