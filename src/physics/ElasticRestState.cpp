@@ -150,17 +150,22 @@ void ElasticRestState::storeGradients(const std::vector<Vec3>& rest, const Cubic
     return PairGradient{static_cast<float>(g.x()), static_cast<float>(g.y()), static_cast<float>(g.z())};
   };
   // The distinct values, block by block (a fixed blocking: the outcome does not depend on the thread count), then
-  // merged.
+  // merged. A block's buffer is made distinct whenever it has doubled since the last time (from kBuffered values
+  // on), so it holds about twice the distinct values, not every pair's: the rebuild follows a sort, on top of
+  // everything a step holds (each thread's block took 3 MB at 40 pairs per particle).
   constexpr std::size_t kCodes = std::size_t(1) << 16;
+  constexpr std::size_t kBuffered = 4096;
   const std::size_t blocks = (n + kDistinctBlock - 1) / kDistinctBlock;
   std::vector<std::vector<PairGradient>> distinct(blocks);
   parallel::forEach(blocks, [&](std::size_t b) {
     std::vector<PairGradient>& values = distinct[b];
+    std::size_t sortAt = kBuffered;
     for (std::size_t s = b * kDistinctBlock; s < std::min(n, (b + 1) * kDistinctBlock); ++s) {
       for (std::size_t pair = begin(s); pair < end(s); ++pair) values.push_back(rounded(s, pair));
-      if (values.size() > 4 * kCodes) {
+      if (values.size() > sortAt) {
         sortUnique(values);
         if (values.size() > kCodes) break; // more than there are codes: the merge below gives up too
+        sortAt = std::max(kBuffered, 2 * values.size());
       }
     }
     sortUnique(values);
