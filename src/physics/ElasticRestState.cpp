@@ -152,7 +152,7 @@ void ElasticRestState::storeGradients(const std::vector<Vec3>& rest, const Cubic
   // The distinct values, block by block (a fixed blocking: the outcome does not depend on the thread count), then
   // merged. A block's buffer is made distinct whenever it has doubled since the last time (from kBuffered values
   // on), so it holds about twice the distinct values, not every pair's: the rebuild follows a sort, on top of
-  // everything a step holds (each thread's block took 3 MB at 40 pairs per particle).
+  // everything a step holds (a thread's block took 1.6 MB at a lattice's 26 rest pairs per particle).
   constexpr std::size_t kCodes = std::size_t(1) << 16;
   constexpr std::size_t kBuffered = 4096;
   const std::size_t blocks = (n + kDistinctBlock - 1) / kDistinctBlock;
