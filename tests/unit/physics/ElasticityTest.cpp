@@ -159,6 +159,24 @@ TEST(ElasticRestState, RestGradientsOfAnIrregularBodyAreKeptPerPairWhenTooManyTo
   expectRestGradientsAsComputed(rest, solver.particles()[0].vec3(field::restPosition), ctx.kernel);
 }
 
+TEST(ElasticRestState, ALargeLatticeBodySharesItsFewDistinctRestGradients) {
+  // 17^3 particles: two blocks of distinct gradients to merge, each with far more pairs than its buffer holds
+  // before it is made distinct again (about 100,000 against 4,096), so the values are gathered in many rounds.
+  ParticleSystem ps(kR);
+  addSet(ps, "rubber", SetKind::Porous, sampleBox(Vec3::Zero(), Vec3(0.34, 0.34, 0.34), kR), 0);
+  ASSERT_EQ(ps[0].size(), 17u * 17u * 17u);
+  Solver solver(std::move(ps), weightless(), std::vector<PorousMaterial>{rubber()}, SolverSettings{}, fixedStep(kDt),
+                RunState{});
+  const StepContext ctx = solver.beginStep(kDt);
+  Elasticity term;
+  term.prepare(ctx);
+  const ElasticRestState& rest = term.restState(0);
+  ASSERT_GT(rest.end(rest.size() - 1), 100000u);
+  EXPECT_GE(rest.sharedGradients(), 26u);
+  EXPECT_LE(rest.sharedGradients(), 4 * 26u);
+  expectRestGradientsAsComputed(rest, solver.particles()[0].vec3(field::restPosition), ctx.kernel);
+}
+
 TEST_F(ElasticBlock, RestStateIsRebuiltWhenTheParticlesAreReorderedOrRemoved) {
   // Its pairs are indices into the set's order: a reordering (Morton sort), a removal or other ids (a restart)
   // must rebuild them, and nothing else need.
