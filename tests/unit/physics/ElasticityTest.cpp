@@ -139,6 +139,30 @@ TEST_F(ElasticBlock, RestGradientsOfALatticeShareTheirDistinctValues) {
   expectRestGradientsAsComputed(rest, set().vec3(field::restPosition), ctx_->kernel);
 }
 
+/// The rest state of one rubber body at positions x, as elasticity prepares it for the first step.
+class RestStateOf {
+public:
+  explicit RestStateOf(const std::vector<Vec3>& x) {
+    ParticleSystem ps(kR);
+    addSet(ps, "rubber", SetKind::Porous, x, 0);
+    solver_ = std::make_unique<Solver>(std::move(ps), weightless(), std::vector<PorousMaterial>{rubber()},
+                                       SolverSettings{}, fixedStep(kDt), RunState{});
+    const StepContext ctx = solver_->beginStep(kDt);
+    term_.prepare(ctx);
+    kernel_ = &ctx.kernel; // the solver's own
+  }
+  const ElasticRestState& rest() const { return term_.restState(0); }
+  /// Fails the test unless every pair reads the gradient computed from the rest positions.
+  void expectGradientsAsComputed() const {
+    expectRestGradientsAsComputed(rest(), solver_->particles()[0].vec3(field::restPosition), *kernel_);
+  }
+
+private:
+  std::unique_ptr<Solver> solver_;
+  Elasticity term_;
+  const CubicKernel* kernel_ = nullptr;
+};
+
 TEST(ElasticRestState, RestGradientsOfAnIrregularBodyAreKeptPerPairWhenTooManyToShare) {
   // A jittered 15^3 block: every pair its own value (the two directions of a pair opposite), about 90,000 of
   // them, more than the 2^16 codes.
@@ -146,35 +170,22 @@ TEST(ElasticRestState, RestGradientsOfAnIrregularBodyAreKeptPerPairWhenTooManyTo
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> d(-0.2 * kR, 0.2 * kR);
   for (Vec3& p : x) p += Vec3(d(rng), d(rng), d(rng));
-  ParticleSystem ps(kR);
-  addSet(ps, "rubber", SetKind::Porous, x, 0);
-  Solver solver(std::move(ps), weightless(), std::vector<PorousMaterial>{rubber()}, SolverSettings{}, fixedStep(kDt),
-                RunState{});
-  const StepContext ctx = solver.beginStep(kDt);
-  Elasticity term;
-  term.prepare(ctx);
-  const ElasticRestState& rest = term.restState(0);
-  ASSERT_GT(rest.end(rest.size() - 1), std::size_t(1) << 16);
-  EXPECT_EQ(rest.sharedGradients(), 0u);
-  expectRestGradientsAsComputed(rest, solver.particles()[0].vec3(field::restPosition), ctx.kernel);
+  const RestStateOf body(x);
+  ASSERT_GT(body.rest().end(body.rest().size() - 1), std::size_t(1) << 16);
+  EXPECT_EQ(body.rest().sharedGradients(), 0u);
+  body.expectGradientsAsComputed();
 }
 
 TEST(ElasticRestState, ALargeLatticeBodySharesItsFewDistinctRestGradients) {
   // 17^3 particles: two blocks of distinct gradients to merge, each with far more pairs than its buffer holds
   // before it is made distinct again (about 100,000 against 4,096), so the values are gathered in many rounds.
-  ParticleSystem ps(kR);
-  addSet(ps, "rubber", SetKind::Porous, sampleBox(Vec3::Zero(), Vec3(0.34, 0.34, 0.34), kR), 0);
-  ASSERT_EQ(ps[0].size(), 17u * 17u * 17u);
-  Solver solver(std::move(ps), weightless(), std::vector<PorousMaterial>{rubber()}, SolverSettings{}, fixedStep(kDt),
-                RunState{});
-  const StepContext ctx = solver.beginStep(kDt);
-  Elasticity term;
-  term.prepare(ctx);
-  const ElasticRestState& rest = term.restState(0);
-  ASSERT_GT(rest.end(rest.size() - 1), 100000u);
-  EXPECT_GE(rest.sharedGradients(), 26u);
-  EXPECT_LE(rest.sharedGradients(), 4 * 26u);
-  expectRestGradientsAsComputed(rest, solver.particles()[0].vec3(field::restPosition), ctx.kernel);
+  const std::vector<Vec3> x = sampleBox(Vec3::Zero(), Vec3(0.34, 0.34, 0.34), kR);
+  ASSERT_EQ(x.size(), 17u * 17u * 17u);
+  const RestStateOf body(x);
+  ASSERT_GT(body.rest().end(body.rest().size() - 1), 100000u);
+  EXPECT_GE(body.rest().sharedGradients(), 26u);
+  EXPECT_LE(body.rest().sharedGradients(), 4 * 26u);
+  body.expectGradientsAsComputed();
 }
 
 TEST_F(ElasticBlock, RestStateIsRebuiltWhenTheParticlesAreReorderedOrRemoved) {
