@@ -143,7 +143,7 @@ void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& g
         for (std::size_t k = 0; k < n; ++k) fluidW += w[k];
       if (!p.counts) continue;
       for (std::size_t k = 0; k < n; ++k) {
-        const std::size_t j = static_cast<std::size_t>(range.first[k]);
+        const std::size_t j = static_cast<std::size_t>(range[k]);
         const Vec3 xij = scratch.offset(k);
         const double f = p.coupling.factorOf(objectA[i] == p.objectB[j]);
         sumW += f * w[k];
@@ -163,7 +163,7 @@ void computeSetDensities(const StepContext& ctx, std::size_t a, PairGradients& g
       PairFactor* s = wall.gradients->data() + wall.list->offset(i);
       const std::size_t n = scratch.evaluate(kernel, xi, *wall.x, range, s);
       for (std::size_t k = 0; k < n; ++k) {
-        const double vk = (*wall.volume)[static_cast<std::size_t>(range.first[k])];
+        const double vk = (*wall.volume)[static_cast<std::size_t>(range[k])];
         const Vec3 xik = scratch.offset(k);
         wallW += vk * scratch.w[k];
         g += (vk * s[k]) * xik;
@@ -213,7 +213,7 @@ void computeSaturation(const StepContext& ctx, std::size_t a) {
     PairScratch& scratch = pairScratch();
     const NeighbourList::Range range = same.of(i);
     const std::size_t count = scratch.values(kernel, x[i], x, range);
-    for (std::size_t k = 0; k < count; ++k) n += (m / rho[static_cast<std::size_t>(range.first[k])]) * scratch.w[k];
+    for (std::size_t k = 0; k < count; ++k) n += (m / rho[static_cast<std::size_t>(range[k])]) * scratch.w[k];
     if (poreFill)
       for (std::size_t k = 0; k < count; ++k) coverage += poreFill->volumeWeight(scratch.dist[k]);
     saturation[i] = std::clamp(fluidVolume[i] / (phi * n), 0.0, 1.0);

@@ -193,6 +193,19 @@ void NeighbourSearch::encodeCandidates(const Index* first, const Index* last, Co
   out.resize(static_cast<std::size_t>(code - out.data()));
 }
 
+namespace {
+/// Writes the values [first, last) into `array` from position `at` on.
+template <class T> void storeAt(ReallocVector<T>& array, std::size_t at, const T* first, const T* last) {
+  std::copy(first, last, array.begin() + at);
+}
+void storeAt(PackedIndices& array, std::size_t at, const Index* first, const Index* last) {
+  array.store(at, first, last);
+}
+/// Empties `array` and gives its block back.
+template <class T> void release(ReallocVector<T>& array) { memory::freeAll(array); }
+void release(PackedIndices& array) { array.release(); }
+} // namespace
+
 template <class List, class AppendNeighbours>
 void NeighbourSearch::assemble(std::size_t n, List& list, const AppendNeighbours& append) {
   using Element = typename decltype(list.indices_)::value_type;
@@ -237,13 +250,13 @@ void NeighbourSearch::assemble(std::size_t n, List& list, const AppendNeighbours
     if (pairs > list.indices_.capacity()) { // grown to what the rounds so far suggest for the whole list
       // A later round's growth keeps the pairs so far, moved in place (ReallocVector). In the first, nothing is
       // kept: a fresh block, not the old one's pages moved.
-      if (first == 0) memory::freeAll(list.indices_);
+      if (first == 0) release(list.indices_);
       list.indices_.reserve(std::max<std::uint64_t>(pairs, pairs * chunks / last) + pairs / 32);
     }
     list.indices_.resize(pairs);
     parallel::forEach(last - first, [&](std::size_t k) {
       const Buffer& src = buffers[k];
-      std::copy(src.begin(), src.end(), list.indices_.begin() + list.offsets_[(first + k) * kChunk]);
+      storeAt(list.indices_, list.offsets_[(first + k) * kChunk], src.data(), src.data() + src.size());
     });
   }
 }
@@ -273,7 +286,7 @@ void NeighbourSearch::update(const std::vector<const std::vector<Vec3>*>& positi
     // (a grid search is where it was). Fresh pages for the lists once per grid search cost little beside it.
     for (NeighbourList& list : lists_) {
       memory::freeAll(list.offsets_);
-      memory::freeAll(list.indices_);
+      list.indices_.release();
     }
     build(positions, wanted, h_ + skin_, candidates_);
     builtAt_.resize(sets_);
@@ -365,6 +378,7 @@ void NeighbourSearch::filterCandidates(const std::vector<const std::vector<Vec3>
       for (const auto& pair : pairs) extras[extraStart[static_cast<std::size_t>(pair.first) + 1]++] = pair.second;
   }
 
+  lists_[a * sets_ + b].indices_.setWidthFor(xb.size());
   assemble(xa.size(), lists_[a * sets_ + b], [&](std::size_t i, IndexBuffer& out) {
     if (i >= withList) return;
     const Vec3& p = xa[i];
@@ -602,6 +616,7 @@ void NeighbourSearch::build(const std::vector<const std::vector<Vec3>*>& positio
           encodeCandidates(found.data(), found.data() + found.size(), out);
         });
       } else {
+        lists[a * sets_ + b].indices_.setWidthFor(positions[b]->size());
         assemble(xa.size(), lists[a * sets_ + b], [&](std::size_t i, IndexBuffer& out) {
           if (i < withList) find(i, out);
         });

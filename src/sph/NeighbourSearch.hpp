@@ -13,6 +13,7 @@
 
 #include "core/ReallocVector.hpp"
 #include "core/Types.hpp"
+#include "sph/PackedIndices.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -26,13 +27,15 @@ namespace poro {
 class NeighbourList {
 public:
   struct Range {
-    const Index* first;
-    const Index* last;
-    const Index* begin() const { return first; }
-    const Index* end() const { return last; }
-    std::size_t size() const { return static_cast<std::size_t>(last - first); }
+    PackedIndices::Iterator first;
+    std::size_t count;
+    PackedIndices::Iterator begin() const { return first; }
+    PackedIndices::Iterator end() const { return first + count; }
+    std::size_t size() const { return count; }
+    /// The k-th neighbour.
+    Index operator[](std::size_t k) const { return *(first + k); }
   };
-  Range of(std::size_t i) const { return {indices_.data() + offsets_[i], indices_.data() + offsets_[i + 1]}; }
+  Range of(std::size_t i) const { return {indices_.at(offsets_[i]), std::size_t{offsets_[i + 1] - offsets_[i]}}; }
   /// Position of particle i's first neighbour in the pair arrays (for per-pair data stored alongside).
   std::size_t offset(std::size_t i) const { return static_cast<std::size_t>(offsets_[i]); }
   std::size_t particles() const { return offsets_.empty() ? 0 : offsets_.size() - 1; }
@@ -40,9 +43,9 @@ public:
 
 private:
   friend class NeighbourSearch;
-  /// 32 bits: a list of more than 2^32 - 1 pairs (16 GiB of indices) is refused by the search.
+  /// 32 bits: a list of more than 2^32 - 1 pairs is refused by the search.
   std::vector<std::uint32_t> offsets_;
-  ReallocVector<Index> indices_; ///< grown in place: see ReallocVector
+  PackedIndices indices_;
 };
 
 class NeighbourSearch {

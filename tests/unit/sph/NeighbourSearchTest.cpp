@@ -126,6 +126,24 @@ TEST(NeighbourSearch, RandomPointsOneSet) {
   checkAgainstBruteForce({&x}, {{true}}, h);
 }
 
+// Lists hold indices in 3 bytes up to 2^24 particles and in 4 beyond. Runs of indices are written by different
+// threads in any order: each must leave the bytes after its last index alone (stored here back to front).
+TEST(PackedIndices, ThreeBytesUpTo2To24ParticlesFourBeyondAndRunsLeaveTheirNeighboursAlone) {
+  for (const std::size_t particles : {std::size_t{1} << 24, (std::size_t{1} << 24) + 1}) {
+    const Index largest = static_cast<Index>(particles - 1);
+    const std::vector<Index> values{0, 1, 255, 256, 65535, 0x00ab'cdef & largest, 65536, largest, 7, largest};
+    PackedIndices packed;
+    packed.setWidthFor(particles);
+    EXPECT_EQ(packed.width(), particles <= (std::size_t{1} << 24) ? 3u : 4u);
+    packed.resize(values.size());
+    const std::size_t half = values.size() / 2;
+    packed.store(half, values.data() + half, values.data() + values.size());
+    packed.store(0, values.data(), values.data() + half);
+    for (std::size_t k = 0; k < values.size(); ++k)
+      EXPECT_EQ(*packed.at(k), values[k]) << particles << " particles, index " << k;
+  }
+}
+
 // 20,000 particles are 40 chunks of the list build, assembled in rounds (three with one thread, two with two):
 // each round's pairs must land at the offsets the rounds before it left, with and without the skin.
 TEST(NeighbourSearch, ListsOfManyChunksAreAssembledInRounds) {
