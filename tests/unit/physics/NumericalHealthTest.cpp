@@ -30,6 +30,13 @@ ParticleSystem waterBlock() {
   return ps;
 }
 
+/// The block with velocities towards its centre: pressures and viscous forces are not zero.
+ParticleSystem squeezedBlock() {
+  ParticleSystem ps = waterBlock();
+  for (std::size_t i = 0; i < ps[0].size(); ++i) ps[0].v()[i] = -20.0 * (ps[0].x()[i] - Vec3::Constant(0.08));
+  return ps;
+}
+
 TimeControl steps(int n, int writeEvery = 1000) {
   TimeControl control;
   control.deltaT = kDt;
@@ -46,6 +53,7 @@ struct Writes {
   std::vector<std::vector<Vec3>> positions;
   std::vector<std::vector<Vec3>> velocities;
   std::vector<std::vector<double>> pressures;
+  std::vector<std::vector<Vec3>> warmStarts; ///< deltaV
   Solver::Writer writer() {
     return [this](const Solver& s) {
       if (s.state().step == 0) return; // the start's rewrite of 0/ (Solver::run), not a write these tests check
@@ -54,6 +62,7 @@ struct Writes {
       positions.push_back(s.particles()[0].x());
       velocities.push_back(s.particles()[0].v());
       pressures.push_back(s.particles()[0].real(field::pressure));
+      warmStarts.push_back(s.particles()[0].vec3(field::deltaV));
     };
   }
 };
@@ -130,19 +139,35 @@ TEST(Health, NaNUndoesTheStepAndWritesTheLastFiniteState) {
   EXPECT_NE(message.find("is written"), std::string::npos) << message;
 }
 
+TEST(Health, NaNUndoesTheStepAndWritesTheWarmStartAsZero) {
+  // The snapshot does not copy the implicit solve's warm start (deltaV): an undone step writes it as zero, so a
+  // restart from the written state starts the solve cold. Everything else is the last finite state. Viscosity
+  // and a squeezed block give the solve something to do.
+  FluidProperties viscous;
+  viscous.viscosity = 1.0;
+  Solver reference(squeezedBlock(), viscous, {}, SolverSettings{}, steps(2), RunState{});
+  reference.run([](const Solver&) {});
+  const auto& warmStart = reference.particles()[0].vec3(field::deltaV);
+  ASSERT_TRUE(std::any_of(warmStart.begin(), warmStart.end(), [](const Vec3& d) { return d != Vec3::Zero(); }))
+      << "the run had no warm start to drop";
+  Solver solver(squeezedBlock(), viscous, {}, SolverSettings{}, steps(10), RunState{});
+  solver.injectNaN(3);
+  Writes writes;
+  runExpectingStop(solver, writes);
+  ASSERT_EQ(writes.steps, std::vector<long long>{2});
+  EXPECT_EQ(writes.positions[0], reference.particles()[0].x());
+  EXPECT_EQ(writes.velocities[0], reference.particles()[0].v());
+  EXPECT_EQ(writes.warmStarts[0], std::vector<Vec3>(warmStart.size(), Vec3::Zero()));
+}
+
 TEST(Health, NaNUndoesTheStepAndWritesThePressuresBefore) {
   // The snapshot does not copy p: it is formed again from the restored pi and densities, and must be the p of the
   // last finite state to the bit. The block is squeezed (velocities towards its centre), so that p is not zero.
-  const auto squeezed = [] {
-    ParticleSystem ps = waterBlock();
-    for (std::size_t i = 0; i < ps[0].size(); ++i) ps[0].v()[i] = -20.0 * (ps[0].x()[i] - Vec3::Constant(0.08));
-    return ps;
-  };
-  Solver reference(squeezed(), FluidProperties{}, {}, SolverSettings{}, steps(2), RunState{});
+  Solver reference(squeezedBlock(), FluidProperties{}, {}, SolverSettings{}, steps(2), RunState{});
   reference.run([](const Solver&) {});
   const auto& p = reference.particles()[0].real(field::pressure);
   ASSERT_GT(*std::max_element(p.begin(), p.end()), 0.0) << "no pressure to check";
-  Solver solver(squeezed(), FluidProperties{}, {}, SolverSettings{}, steps(10), RunState{});
+  Solver solver(squeezedBlock(), FluidProperties{}, {}, SolverSettings{}, steps(10), RunState{});
   solver.injectNaN(3);
   Writes writes;
   runExpectingStop(solver, writes);
