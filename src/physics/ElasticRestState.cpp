@@ -73,19 +73,21 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
     // N0: same object only (two bodies of one material that start in contact are not glued), by persistent id.
     offsets_.assign(n + 1, 0);
     parallel::forEach(n, [&](std::size_t s) {
-      std::int64_t count = 0;
+      std::uint32_t count = 0;
       for (Index t : all.of(s)) count += objects[static_cast<std::size_t>(t)] == objects[s];
       offsets_[s + 1] = count;
     });
     for (std::size_t s = 0; s < n; ++s) offsets_[s + 1] += offsets_[s];
-    neighbours_.resize(static_cast<std::size_t>(offsets_[n]));
+    neighbours_.setWidthFor(n);
+    neighbours_.resize(offsets_[n]);
     parallel::forEach(n, [&](std::size_t s) {
-      Index* const first = neighbours_.data() + begin(s);
-      Index* last = first;
+      thread_local std::vector<Index> same;
+      same.clear();
       for (Index t : all.of(s))
-        if (objects[static_cast<std::size_t>(t)] == objects[s]) *last++ = t;
-      std::sort(first, last,
+        if (objects[static_cast<std::size_t>(t)] == objects[s]) same.push_back(t);
+      std::sort(same.begin(), same.end(),
                 [&](Index a, Index b) { return ids[static_cast<std::size_t>(a)] < ids[static_cast<std::size_t>(b)]; });
+      neighbours_.store(begin(s), same.data(), same.data() + same.size());
     });
   }
   volume_.resize(n);
@@ -96,7 +98,7 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
   parallel::forEach(n, [&](std::size_t s) {
     double shepard = kernel.w0();
     for (std::size_t pair = begin(s); pair < end(s); ++pair)
-      shepard += kernel.w(rest[s] - rest[static_cast<std::size_t>(neighbours_[pair])]);
+      shepard += kernel.w(rest[s] - rest[static_cast<std::size_t>(neighbour(pair))]);
     shepard_[s] = shepard;
     volume_[s] = 1.0 / shepard;
   });
@@ -106,7 +108,7 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
     Mat3 moment = Mat3::Zero();
     Vec3 sum = Vec3::Zero();
     for (std::size_t pair = begin(s); pair < end(s); ++pair) {
-      const std::size_t t = static_cast<std::size_t>(neighbours_[pair]);
+      const std::size_t t = static_cast<std::size_t>(neighbour(pair));
       const Vec3 weighted = weightedGradient(pair);
       moment += weighted * (rest[t] - rest[s]).transpose();
       sum += weighted;
@@ -119,7 +121,7 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
   parallel::forEach(n, [&](std::size_t s) {
     Mat3 moment = Mat3::Zero();
     for (std::size_t pair = begin(s); pair < end(s); ++pair) {
-      const std::size_t t = static_cast<std::size_t>(neighbours_[pair]);
+      const std::size_t t = static_cast<std::size_t>(neighbour(pair));
       const Vec3 g = correction_[t] * gradient(pair);
       moment += volume_[t] * g * g.transpose();
     }
@@ -131,7 +133,7 @@ void ElasticRestState::build(const ParticleSet& set, const CubicKernel& kernel) 
 
 void ElasticRestState::giveBackMemory() {
   memory::freeAll(offsets_);
-  memory::freeAll(neighbours_);
+  neighbours_.release();
   memory::freeAll(gradientTable_);
   memory::freeAll(gradientCodes_);
   memory::freeAll(volume_);
@@ -146,7 +148,7 @@ void ElasticRestState::storeGradients(const std::vector<Vec3>& rest, const Cubic
   const std::size_t n = size();
   const std::size_t pairs = neighbours_.size();
   const auto rounded = [&](std::size_t s, std::size_t pair) {
-    const Vec3 g = kernel.grad(rest[s] - rest[static_cast<std::size_t>(neighbours_[pair])]);
+    const Vec3 g = kernel.grad(rest[s] - rest[static_cast<std::size_t>(neighbour(pair))]);
     return PairGradient{static_cast<float>(g.x()), static_cast<float>(g.y()), static_cast<float>(g.z())};
   };
   // The distinct values, block by block (a fixed blocking: the outcome does not depend on the thread count), then

@@ -13,6 +13,7 @@
 
 #include "core/Types.hpp"
 #include "sph/Kernel.hpp"
+#include "sph/PackedIndices.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -30,9 +31,9 @@ public:
   /// N0(s) as indices into the set's current order, and V0_t gradW(X_s - X_t) per pair.
   std::size_t begin(std::size_t s) const { return static_cast<std::size_t>(offsets_[s]); }
   std::size_t end(std::size_t s) const { return static_cast<std::size_t>(offsets_[s + 1]); }
-  Index neighbour(std::size_t pair) const { return neighbours_[pair]; }
+  Index neighbour(std::size_t pair) const { return *neighbours_.at(pair); }
   Vec3 weightedGradient(std::size_t pair) const {
-    return volume_[static_cast<std::size_t>(neighbours_[pair])] * gradient(pair);
+    return volume_[static_cast<std::size_t>(neighbour(pair))] * gradient(pair);
   }
   /// gradW(X_s - X_t) per pair, without the volume: for sums that fold V0_t into a per-particle factor.
   Vec3 gradient(std::size_t pair) const {
@@ -67,8 +68,10 @@ private:
   /// the ids themselves would take 8 bytes per particle.
   std::uint64_t idsFingerprint_ = 0;
   std::size_t idsCount_ = 0;
-  std::vector<std::int64_t> offsets_;
-  std::vector<Index> neighbours_;
+  /// 32 bits, like NeighbourList's: N0 is part of a list the search holds.
+  std::vector<std::uint32_t> offsets_;
+  PackedIndices neighbours_; ///< 3 bytes each, like the lists at H
+
   /// gradW(X_s - X_t) per pair in single precision, like the other pair data (PairFactor), and V0_t applied in
   /// double when read: the two directions of a pair stay exact opposites, so elastic pair forces cancel.
   struct PairGradient {
