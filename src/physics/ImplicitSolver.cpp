@@ -14,7 +14,7 @@ namespace {
 // Three Krylov vectors besides the unknown: the right-hand side turns into the residual r in place, and the
 // preconditioned residual z and the product q = A p take turns in one field (linalg::CgWork). The unknown u is
 // solved for in the velocity field itself, v^n kept meanwhile in dv's (solve()).
-const char* const kRhs = "cgRhs"; ///< b, then r
+const char* const kRhs = ImplicitSolver::rightHandSideField; ///< b, then r
 const char* const kUnknown = field::v;
 const char* const kP = "cgP";
 const char* const kQ = "cgQ"; ///< z and q
@@ -195,7 +195,7 @@ linalg::CgResult ImplicitSolver::solve(const StepContext& ctx) {
 
   for (std::size_t a : ctx.dynamicSets) { // v* = u + dt g, dv = u - v^n; Fixed: v* = v^n (METHOD.md §6.5.9)
     ParticleSet& set = ctx.particles[a];
-    auto& v = set.v(); // u
+    auto& v = set.v();                  // u
     auto& dv = set.vec3(field::deltaV); // v^n
     const std::int64_t* fixed = fixedFlags(set);
     parallel::forEach(set.size(), [&](std::size_t i) {

@@ -20,6 +20,8 @@ public:
 
   /// Registers dv (restart) and the Krylov scratch fields.
   static void registerFields(ParticleSet& set);
+  /// The scratch field that holds the right-hand side, then the residual, during a solve only.
+  static constexpr const char* rightHandSideField = "cgRhs";
 
   /// Replaces v^n by v* for every dynamic set. Returns the CG statistics (0 iterations if no term is on).
   /// With collectWallReactions, also keeps the forces the terms exert on wall particles (wallReactions()).

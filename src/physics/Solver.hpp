@@ -126,6 +126,8 @@ private:
   double stepSizeFor(double deltaT) const;
   bool isWriteStep(double previousTime) const;
 
+  /// The implicit and pressure solves' fields of a moving set.
+  void registerSolveFields(ParticleSet& set) const;
   void setUpPorousSet(ParticleSet& set, const PorousMaterial& material);
   void setUpBoundarySet(ParticleSet& set);
   /// A parallel run: the walls' volumes again, with the ghost walls a subdomain's edge needs.

@@ -1,16 +1,19 @@
 #include "sph/ParticleSet.hpp"
 
 #include <cstring>
-#include <type_traits>
 #include <stdexcept>
+#include <type_traits>
 
 namespace poro {
 
 const char* toString(SetKind kind) {
   switch (kind) {
-  case SetKind::Fluid: return "fluid";
-  case SetKind::Porous: return "porous";
-  case SetKind::Boundary: return "boundary";
+  case SetKind::Fluid:
+    return "fluid";
+  case SetKind::Porous:
+    return "porous";
+  case SetKind::Boundary:
+    return "boundary";
   }
   return "?";
 }
@@ -41,8 +44,7 @@ template <class T> const void* bytesOf(const T& value) { return bytesOf(const_ca
 
 } // namespace
 
-template <class T>
-struct ParticleSet::Field final : FieldBase {
+template <class T> struct ParticleSet::Field final : FieldBase {
   std::vector<T> data;
   void resize(std::size_t n) override { data.resize(n, T::Zero()); }
   void permute(const std::vector<Index>& order) override {
@@ -74,10 +76,8 @@ struct ParticleSet::Field final : FieldBase {
 };
 
 // Scalars have no T::Zero(); specialise the value-initialising resize.
-template <>
-void ParticleSet::Field<Real>::resize(std::size_t n) { data.resize(n, 0.0); }
-template <>
-void ParticleSet::Field<std::int64_t>::resize(std::size_t n) { data.resize(n, 0); }
+template <> void ParticleSet::Field<Real>::resize(std::size_t n) { data.resize(n, 0.0); }
+template <> void ParticleSet::Field<std::int64_t>::resize(std::size_t n) { data.resize(n, 0); }
 
 ParticleSet::ParticleSet(std::string name, SetKind kind) : name_(std::move(name)), kind_(kind) {
   addInt(field::id, Restart);
@@ -98,14 +98,27 @@ void ParticleSet::resize(std::size_t n) {
 ParticleSet::FieldBase* ParticleSet::find(const std::string& name) const {
   for (const auto& f : fields_)
     if (f->info.name == name) return f.get();
+  for (const auto& [sharing, storage] : shared_)
+    if (sharing == name) return find(storage);
   return nullptr;
 }
 
-template <class T>
-std::vector<T>& ParticleSet::add(const std::string& name, FieldType type, FieldRole role) {
+void ParticleSet::share(const std::string& name, const std::string& storage) {
+  const FieldBase* target = find(storage);
+  if (!target || target->info.role != Scratch || has(name))
+    throw std::logic_error("particle set '" + name_ + "': field '" + name + "' cannot share the storage of '" +
+                           storage + "' (it must be an unregistered name, and '" + storage +
+                           "' a registered scratch field)");
+  shared_.emplace_back(name, storage);
+}
+
+template <class T> std::vector<T>& ParticleSet::add(const std::string& name, FieldType type, FieldRole role) {
   if (FieldBase* existing = find(name)) {
     if (existing->info.type != type)
       throw std::logic_error("particle set '" + name_ + "': field '" + name + "' registered with another type");
+    if (role != Scratch && existing->info.name != name)
+      throw std::logic_error("particle set '" + name_ + "': field '" + name + "' shares the storage of '" +
+                             existing->info.name + "' and can only be scratch");
     if (role > existing->info.role) existing->info.role = role;
     return static_cast<Field<T>*>(existing)->data;
   }
@@ -117,8 +130,7 @@ std::vector<T>& ParticleSet::add(const std::string& name, FieldType type, FieldR
   return data;
 }
 
-template <class T>
-std::vector<T>& ParticleSet::get(const std::string& name, FieldType type) const {
+template <class T> std::vector<T>& ParticleSet::get(const std::string& name, FieldType type) const {
   FieldBase* f = find(name);
   if (!f || f->info.type != type)
     throw std::logic_error("particle set '" + name_ + "' has no field '" + name + "' of the requested type");
@@ -184,6 +196,7 @@ ParticleSet ParticleSet::select(const std::vector<Index>& slots) const {
   ParticleSet result(name_, kind_);
   result.fields_.clear();
   for (const auto& f : fields_) result.fields_.push_back(f->gathered(slots));
+  result.shared_ = shared_;
   result.size_ = slots.size();
   result.x_ = &result.get<Vec3>(field::x, FieldType::Vec3);
   result.v_ = &result.get<Vec3>(field::v, FieldType::Vec3);

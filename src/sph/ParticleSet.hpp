@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace poro {
@@ -57,6 +58,13 @@ public:
   std::vector<Vec3>& addVec3(const std::string& name, FieldRole role = Scratch);
   std::vector<Mat3>& addMat3(const std::string& name, FieldRole role = Scratch);
   std::vector<std::int64_t>& addInt(const std::string& name, FieldRole role = Scratch);
+
+  /// Lets scratch field `name` use the storage of the scratch field `storage` (registered, of the type `name` will
+  /// be registered with): for two arrays that parts of a step use at different times, so that a step holds one.
+  /// Whatever one writes, the other reads. `name` is not a field of its own: fields(), fieldNames() and everything
+  /// that acts on all fields see `storage` only. Call before `name` is registered; registering it as anything but
+  /// scratch is then a logic error.
+  void share(const std::string& name, const std::string& storage);
 
   bool has(const std::string& name) const;
   const FieldInfo* info(const std::string& name) const;
@@ -116,6 +124,7 @@ private:
   SetKind kind_;
   std::size_t size_ = 0;
   std::vector<std::unique_ptr<FieldBase>> fields_;
+  std::vector<std::pair<std::string, std::string>> shared_; ///< (name, storage) of share()
   std::vector<Vec3>* x_ = nullptr;
   std::vector<Vec3>* v_ = nullptr;
 };

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace poro {
 namespace {
 
@@ -118,6 +120,34 @@ TEST(ParticleSet, PackedFieldsUnpackBitForBitIntoOtherSlots) {
   EXPECT_EQ(to.v()[1], Vec3::Ones()); // not in the message
   EXPECT_THROW(to.unpack(some.data(), 2, 2, {"pressure", "x"}), std::logic_error);
   EXPECT_THROW(from.pack({0}, {"density"}, some), std::logic_error);
+}
+
+// Two scratch arrays used at different times of a step share one storage: both names reach it, permutes and
+// subdomain selections move it once, and it is neither listed nor packed twice.
+TEST(ParticleSet, AScratchFieldSharingAnothersStorageIsOneArray) {
+  ParticleSet set("fluid", SetKind::Fluid);
+  auto& rhs = set.addVec3("rhs");
+  set.share("acceleration", "rhs");
+  auto& acceleration = set.addVec3("acceleration");
+  EXPECT_EQ(&acceleration, &rhs);
+  EXPECT_TRUE(set.has("acceleration"));
+  set.resize(4);
+  for (std::size_t i = 0; i < 4; ++i) acceleration[i] = Vec3::Constant(static_cast<double>(i));
+  set.permute({3, 2, 1, 0});
+  EXPECT_EQ(set.vec3("acceleration")[0], Vec3::Constant(3.0)) << "permuted once, not twice";
+  const std::vector<std::string> names = set.fieldNames();
+  EXPECT_EQ(std::count(names.begin(), names.end(), "acceleration"), 0);
+  EXPECT_EQ(std::count(names.begin(), names.end(), "rhs"), 1);
+  const ParticleSet part = set.select({1, 2});
+  EXPECT_EQ(&part.vec3("acceleration"), &part.vec3("rhs"));
+  EXPECT_EQ(part.vec3("acceleration")[0], Vec3::Constant(2.0));
+
+  EXPECT_THROW(set.addVec3("acceleration", Restart), std::logic_error) << "a shared storage is scratch only";
+  EXPECT_THROW(set.addReal("acceleration"), std::logic_error) << "of the storage's type";
+  EXPECT_THROW(set.share("rhs", "acceleration"), std::logic_error) << "a registered name";
+  set.addReal("pressure", Output);
+  EXPECT_THROW(set.share("other", "pressure"), std::logic_error) << "a field written out";
+  EXPECT_THROW(set.share("other", "missing"), std::logic_error);
 }
 
 } // namespace
