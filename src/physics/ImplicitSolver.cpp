@@ -195,7 +195,7 @@ linalg::CgResult ImplicitSolver::solve(const StepContext& ctx) {
 
   for (std::size_t a : ctx.dynamicSets) { // v* = u + dt g, dv = u - v^n; Fixed: v* = v^n (METHOD.md §6.5.9)
     ParticleSet& set = ctx.particles[a];
-    auto& v = set.v();                  // u
+    auto& v = set.v(); // u
     auto& dv = set.vec3(field::deltaV); // v^n
     const std::int64_t* fixed = fixedFlags(set);
     parallel::forEach(set.size(), [&](std::size_t i) {

@@ -1,19 +1,16 @@
 #include "sph/ParticleSet.hpp"
 
 #include <cstring>
-#include <stdexcept>
 #include <type_traits>
+#include <stdexcept>
 
 namespace poro {
 
 const char* toString(SetKind kind) {
   switch (kind) {
-  case SetKind::Fluid:
-    return "fluid";
-  case SetKind::Porous:
-    return "porous";
-  case SetKind::Boundary:
-    return "boundary";
+  case SetKind::Fluid: return "fluid";
+  case SetKind::Porous: return "porous";
+  case SetKind::Boundary: return "boundary";
   }
   return "?";
 }
@@ -44,7 +41,8 @@ template <class T> const void* bytesOf(const T& value) { return bytesOf(const_ca
 
 } // namespace
 
-template <class T> struct ParticleSet::Field final : FieldBase {
+template <class T>
+struct ParticleSet::Field final : FieldBase {
   std::vector<T> data;
   void resize(std::size_t n) override { data.resize(n, T::Zero()); }
   void permute(const std::vector<Index>& order) override {
@@ -76,8 +74,10 @@ template <class T> struct ParticleSet::Field final : FieldBase {
 };
 
 // Scalars have no T::Zero(); specialise the value-initialising resize.
-template <> void ParticleSet::Field<Real>::resize(std::size_t n) { data.resize(n, 0.0); }
-template <> void ParticleSet::Field<std::int64_t>::resize(std::size_t n) { data.resize(n, 0); }
+template <>
+void ParticleSet::Field<Real>::resize(std::size_t n) { data.resize(n, 0.0); }
+template <>
+void ParticleSet::Field<std::int64_t>::resize(std::size_t n) { data.resize(n, 0); }
 
 ParticleSet::ParticleSet(std::string name, SetKind kind) : name_(std::move(name)), kind_(kind) {
   addInt(field::id, Restart);
@@ -112,7 +112,8 @@ void ParticleSet::share(const std::string& name, const std::string& storage) {
   shared_.emplace_back(name, storage);
 }
 
-template <class T> std::vector<T>& ParticleSet::add(const std::string& name, FieldType type, FieldRole role) {
+template <class T>
+std::vector<T>& ParticleSet::add(const std::string& name, FieldType type, FieldRole role) {
   if (FieldBase* existing = find(name)) {
     if (existing->info.type != type)
       throw std::logic_error("particle set '" + name_ + "': field '" + name + "' registered with another type");
@@ -130,7 +131,8 @@ template <class T> std::vector<T>& ParticleSet::add(const std::string& name, Fie
   return data;
 }
 
-template <class T> std::vector<T>& ParticleSet::get(const std::string& name, FieldType type) const {
+template <class T>
+std::vector<T>& ParticleSet::get(const std::string& name, FieldType type) const {
   FieldBase* f = find(name);
   if (!f || f->info.type != type)
     throw std::logic_error("particle set '" + name_ + "' has no field '" + name + "' of the requested type");
