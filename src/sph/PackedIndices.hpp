@@ -1,6 +1,7 @@
 #pragma once
 /// The neighbour lists' storage of particle indices (NeighbourSearch.hpp).
 
+#include "core/Memory.hpp"
 #include "core/ReallocVector.hpp"
 #include "core/Types.hpp"
 
@@ -80,7 +81,7 @@ public:
   }
   /// Empties the array and gives its block back; the width stays.
   void release() {
-    ReallocVector<unsigned char>().swap(bytes_);
+    memory::freeAll(bytes_);
     size_ = 0;
   }
 
