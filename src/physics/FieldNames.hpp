@@ -29,7 +29,6 @@ inline constexpr const char* saturation = "saturation";       ///< porous: S (Eq
 inline constexpr const char* localPorosity = "localPorosity"; ///< fluid: phi^loc, share of the volume open to fluid
 // Scratch, recomputed every step.
 inline constexpr const char* rhoTilde = "rhoTilde";           ///< normalised density rho / rho^max
-inline constexpr const char* rhoStar = "rhoStar";             ///< predicted normalised density (Eq. 6)
 inline constexpr const char* alpha = "alpha";                 ///< 1/(|G|^2 + Q), the pressure diagonal factor [m^2]
 inline constexpr const char* gradSum = "gradSum";             ///< G = sum f V gradW [1/m]
 inline constexpr const char* accelP = "accelP";               ///< pressure acceleration a^p [m/s^2]

@@ -17,7 +17,7 @@ namespace {
 const char* const kRhs = ImplicitSolver::rightHandSideField; ///< b, then r
 const char* const kUnknown = field::v;
 const char* const kP = "cgP";
-const char* const kQ = "cgQ"; ///< z and q
+const char* const kQ = ImplicitSolver::productField; ///< z and q
 
 /// Rows of Fixed particles hold their known velocity: (A u)_a = m u_a, b_a = m v^n_a, D_a = m I. Their
 /// residual and search directions then stay zero, which equals moving them to the right-hand side

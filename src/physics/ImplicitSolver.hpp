@@ -22,6 +22,8 @@ public:
   static void registerFields(ParticleSet& set);
   /// The scratch field that holds the right-hand side, then the residual, during a solve only.
   static constexpr const char* rightHandSideField = "cgRhs";
+  /// The scratch field that holds the preconditioned residual and the product A p, during a solve only.
+  static constexpr const char* productField = "cgQ";
 
   /// Replaces v^n by v* for every dynamic set. Returns the CG statistics (0 iterations if no term is on).
   /// With collectWallReactions, also keeps the forces the terms exert on wall particles (wallReactions()).

@@ -12,9 +12,6 @@
 namespace poro {
 
 namespace {
-const char* const kResidual = "pressureResidual";  ///< max(-r_a, 0): the compression left after the sweep's pressure
-const char* const kPreviousPi = "piPreviousSweep"; ///< pi of the sweep before, for the Chebyshev extrapolation
-
 /// The first sweep Chebyshev extrapolates. The sweeps before it are plain relaxed Jacobi, so a step that converges
 /// within them (most steps of a moving flow) is solved exactly as without acceleration, with Jacobi's smaller
 /// single-particle errors; the slowly converging steps (water at rest, deep pools, impacts) are accelerated.
@@ -111,10 +108,8 @@ double pressureOf(double pi, double density, double rhoMax) { return pi * densit
 void PressureSolver::registerFields(ParticleSet& set, const CompatibilitySettings& compatibility) {
   set.addReal(field::pi, Restart);
   set.addReal(field::pressure, Output);
-  set.addReal(field::rhoStar);
   set.addVec3(field::accelP, compatibility.setSequentialPressure ? Restart : Scratch);
-  set.addReal(kResidual);
-  set.addReal(kPreviousPi);
+  set.addVec3(sweepStateField);
 }
 
 void PressureSolver::predictDensities(const StepContext& ctx) const {
@@ -125,7 +120,7 @@ void PressureSolver::predictDensities(const StepContext& ctx) const {
     const auto& object = set.integer(field::objectId);
     const auto& rhoTilde = set.real(field::rhoTilde);
     const auto& gradSum = set.vec3(field::gradSum);
-    auto& rhoStar = set.real(field::rhoStar);
+    auto& state = set.vec3(sweepStateField);
     const double volume = set.particleVolume;
     const auto partners = partnersOf(ctx, a);
     const auto walls = wallsOf(ctx, a);
@@ -141,7 +136,7 @@ void PressureSolver::predictDensities(const StepContext& ctx) const {
           change -= (*w.volume)[kk] * (*w.factors)[q++] * (*w.v)[kk].dot(x[i] - (*w.x)[kk]);
         }
       }
-      rhoStar[i] = rhoTilde[i] + dt * change;
+      state[i][kPredictedDensity] = rhoTilde[i] + dt * change;
     });
   }
   predictWallShares(ctx);
@@ -236,10 +231,10 @@ void PressureSolver::warmStart(const StepContext& ctx) const {
   for (std::size_t a : ctx.dynamicSets) { // Fixed particles keep pi = 0
     ParticleSet& set = ctx.particles[a];
     auto& pi = set.real(field::pi);
-    const auto& rhoStar = set.real(field::rhoStar);
+    const auto& state = set.vec3(sweepStateField);
     const std::int64_t* fixed = fixedFlags(set);
     parallel::forEach(set.size(), [&](std::size_t i) {
-      if (!(rhoStar[i] > 1.0) || (fixed && fixed[i]))
+      if (!(state[i][kPredictedDensity] > 1.0) || (fixed && fixed[i]))
         pi[i] = 0.0;
       else if (capped)
         pi[i] = factor * std::min(pi[i] * previousDt * previousDt, kReferenceCap) / (dt * dt);
@@ -266,12 +261,10 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
       ParticleSet& set = ctx.particles[a];
       const auto& x = set.x();
       const auto& object = set.integer(field::objectId);
-      const auto& rhoStar = set.real(field::rhoStar);
       const auto& gradSum = set.vec3(field::gradSum);
       const auto& accel = set.vec3(field::accelP);
-      auto& residual = set.real(kResidual);
+      auto& state = set.vec3(sweepStateField);
       auto& pi = set.real(field::pi);
-      auto& previousPi = set.real(kPreviousPi);
       const auto& alpha = set.real(field::alpha);
       const std::int64_t* fixed = fixedFlags(set);
       const double volume = set.particleVolume;
@@ -287,36 +280,38 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
       // 12,696 particles gave one thread 8,192 and the other 4,504 (the sum below is the same, bit for bit).
       const auto work = [&](std::size_t i) { return pairsBefore(partners, i); };
       parallel::forEachBalanced(n, work, [&](std::size_t i) {
+        double& residual = state[i][kResidual];
         if (fixed && fixed[i]) {
-          residual[i] = 0.0;
+          residual = 0.0;
           return;
         }
         const double others = partnerProjection(partners, x[i], object[i], i, false);
         const double api = dt2 * (accel[i].dot(gradSum[i]) - volume * others);
-        const double r = (1.0 - rhoStar[i]) - api;
-        residual[i] = std::max(-r, 0.0);
+        const double r = (1.0 - state[i][kPredictedDensity]) - api;
+        residual = std::max(-r, 0.0);
         const double jacobi = std::max(pi[i] - omega * r * alpha[i] / dt2, 0.0);
         // Chebyshev: pi^{k+1} = max(w (jacobi - pi^{k-1}) + pi^{k-1}, 0); the same fixed point as Jacobi's. Only
         // where pi was and stays positive: extrapolating a particle that just left or entered the clamped set
         // overshoots it (measured at r = 1 cm: larger single-particle errors, no fewer sweeps).
-        const double older = previousPi[i];
-        previousPi[i] = pi[i];
+        double& previousPi = state[i][kPreviousPi];
+        const double older = previousPi;
+        previousPi = pi[i];
         const bool extrapolate = weight != 1.0 && older > 0.0 && jacobi > 0.0;
         pi[i] = extrapolate ? std::max(weight * (jacobi - older) + older, 0.0) : jacobi;
         if (contact) { // the wall-share constraint D* <= D^max with the same a^p (WallContact.hpp)
           const double g2 = wallGradient[i].squaredNorm();
           const double rc = (wallLimit[i] - wallStar[i]) - dt2 * accel[i].dot(wallGradient[i]);
-          residual[i] = std::max(residual[i], -rc);
+          residual = std::max(residual, -rc);
           kappa[i] = g2 > 0.0 ? std::max(kappa[i] - omega * rc / (dt2 * g2), 0.0) : 0.0;
         }
       });
-      const double errorSum = parallel::sum<double>(n, [&](std::size_t i) { return residual[i]; });
+      const double errorSum = parallel::sum<double>(n, [&](std::size_t i) { return state[i][kResidual]; });
       const double active = ctx.sumOverRanks(static_cast<double>(
           fixed ? parallel::sum<std::size_t>(n, [&](std::size_t i) -> std::size_t { return fixed[i] ? 0 : 1; }) : n));
       const double mean = active > 0 ? ctx.sumOverRanks(errorSum) / active : 0.0;
       worstMean = std::max(worstMean, mean);
       worstMax =
-          std::max(worstMax, ctx.maxOverRanks(parallel::max(n, 0.0, [&](std::size_t i) { return residual[i]; })));
+          std::max(worstMax, ctx.maxOverRanks(parallel::max(n, 0.0, [&](std::size_t i) { return state[i][kResidual]; })));
     }
     ctx.refreshGhosts({field::pi, field::contactPressure});
     stats.iterations = it;
@@ -391,10 +386,10 @@ std::pair<std::size_t, std::size_t> PressureSolver::mostCompressed(const Particl
   std::pair<std::size_t, std::size_t> worst{sets.empty() ? 0 : sets.front(), 0};
   double largest = -1.0;
   for (std::size_t s : sets) {
-    const auto& residual = particles[s].real(kResidual);
-    for (std::size_t i = 0; i < residual.size(); ++i)
-      if (residual[i] > largest) {
-        largest = residual[i];
+    const auto& state = particles[s].vec3(sweepStateField);
+    for (std::size_t i = 0; i < state.size(); ++i)
+      if (state[i][kResidual] > largest) {
+        largest = state[i][kResidual];
         worst = {s, i};
       }
   }

@@ -27,6 +27,12 @@ class PressureSolver {
 public:
   explicit PressureSolver(const PressureSettings& settings) : settings_(settings) {}
 
+  /// Scratch of a solve, per particle side by side in one Vec3 field: rho~* (Eq. 6), the sweep's compression
+  /// max(-r, 0) and the pi of the sweep before (Chebyshev). A sweep reads the three of a particle together, and the
+  /// field can use storage of the implicit solve, which is done before predictDensities (Solver shares them).
+  static constexpr const char* sweepStateField = "pressureSweepState";
+  enum SweepSlot : int { kPredictedDensity = 0, kResidual = 1, kPreviousPi = 2 };
+
   /// Registers pi (restart), pressure (output) and the solver's scratch fields. With setSequential a^p is
   /// restart state too: the first sets of a step see the previous step's a^p of the sets not yet solved.
   static void registerFields(ParticleSet& set, const CompatibilitySettings& compatibility);

@@ -368,6 +368,8 @@ void Solver::registerSolveFields(ParticleSet& set) const {
   // read from a time directory is a field of its own.
   if (!settings_.compatibility.setSequentialPressure && !set.has(field::accelP))
     set.share(field::accelP, ImplicitSolver::rightHandSideField);
+  // The pressure solve's rho~*, residuals and last pi likewise take the CG's q (5.4 MB at r = 1 cm).
+  set.share(PressureSolver::sweepStateField, ImplicitSolver::productField);
   PressureSolver::registerFields(set, settings_.compatibility);
 }
 
