@@ -15,9 +15,10 @@ namespace poro {
 
 class StateSnapshot {
 public:
-  /// Copies the output fields of `sets`; storage is reused from step to step. `keptInPlace` names fields the
-  /// coming step does not write and whose order it keeps (no reordering, no removal): they are not copied, and
-  /// restore() leaves them as they are. `formedAgain` names fields the caller forms again from the others after
+  /// Copies the output fields of `sets`; storage is reused from step to step. `keptInPlace` names fields whose
+  /// order the coming step keeps (no reordering, no removal) and which it does not write, or writes from the
+  /// positions at its start only: they are not copied, and restore() leaves them as they are (fitting the restored
+  /// positions). `formedAgain` names fields the caller forms again from the others after
   /// restore(): they are not copied either.
   void take(const ParticleSystem& particles, const std::vector<std::size_t>& sets, const RunState& state,
             const std::vector<std::string>& keptInPlace = {}, const std::vector<std::string>& formedAgain = {});
