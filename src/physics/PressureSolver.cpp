@@ -305,13 +305,13 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
           kappa[i] = g2 > 0.0 ? std::max(kappa[i] - omega * rc / (dt2 * g2), 0.0) : 0.0;
         }
       });
-      const double errorSum = parallel::sum<double>(n, [&](std::size_t i) { return state[i][kResidual]; });
+      const auto residualOf = [&](std::size_t i) { return state[i][kResidual]; };
+      const double errorSum = parallel::sum<double>(n, residualOf);
       const double active = ctx.sumOverRanks(static_cast<double>(
           fixed ? parallel::sum<std::size_t>(n, [&](std::size_t i) -> std::size_t { return fixed[i] ? 0 : 1; }) : n));
       const double mean = active > 0 ? ctx.sumOverRanks(errorSum) / active : 0.0;
       worstMean = std::max(worstMean, mean);
-      worstMax =
-          std::max(worstMax, ctx.maxOverRanks(parallel::max(n, 0.0, [&](std::size_t i) { return state[i][kResidual]; })));
+      worstMax = std::max(worstMax, ctx.maxOverRanks(parallel::max(n, 0.0, residualOf)));
     }
     ctx.refreshGhosts({field::pi, field::contactPressure});
     stats.iterations = it;
