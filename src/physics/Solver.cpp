@@ -364,12 +364,17 @@ std::vector<Domain> Solver::sweptByRotatingWalls() const {
 void Solver::registerSolveFields(ParticleSet& set) const {
   ImplicitSolver::registerFields(set);
   // The implicit solve's right-hand side and the pressure solve's a^p are used one after the other in a step: one
-  // array holds both (5.4 MB of the published Seep at r = 1 cm). A lagged a^p is kept from step to step, and one
-  // read from a time directory is a field of its own.
-  if (!settings_.compatibility.setSequentialPressure && !set.has(field::accelP))
+  // array holds both (5.4 MB of the published Seep at r = 1 cm); the pressure solve's rho~*, residuals and last pi
+  // likewise take the CG's q (5.4 MB). A lagged a^p is kept from step to step, and arrays of these names a time
+  // directory brought along (a user's own) stay fields of their own.
+  const auto shareable = [&set](const char* name, const char* storage) {
+    const ParticleSet::FieldInfo* held = set.info(storage);
+    return !set.has(name) && held && held->role == Scratch;
+  };
+  if (!settings_.compatibility.setSequentialPressure && shareable(field::accelP, ImplicitSolver::rightHandSideField))
     set.share(field::accelP, ImplicitSolver::rightHandSideField);
-  // The pressure solve's rho~*, residuals and last pi likewise take the CG's q (5.4 MB at r = 1 cm).
-  set.share(PressureSolver::sweepStateField, ImplicitSolver::productField);
+  if (shareable(PressureSolver::sweepStateField, ImplicitSolver::productField))
+    set.share(PressureSolver::sweepStateField, ImplicitSolver::productField);
   PressureSolver::registerFields(set, settings_.compatibility);
 }
 

@@ -54,6 +54,25 @@ TEST(Integration, LoneParticleFallsExactlyAsSymplecticEuler) {
   EXPECT_EQ(fluid.real(field::pi)[0], 0.0);
 }
 
+TEST(SolverFields, ArraysNamedLikeTheSolvesScratchStayFieldsOfTheirOwn) {
+  // The solves share storage between scratch fields that a step uses one after the other. A time directory may
+  // bring arrays of those names (a user's own): read as output fields, they keep their own storage, and the run goes
+  // on instead of stopping on a name that is already a field, or on storage that is not scratch.
+  const std::vector<const char*> names{"cgRhs", "cgQ", field::accelP, "pressureSweepState"};
+  for (const std::vector<const char*>& read :
+       {std::vector<const char*>{"cgRhs", "cgQ"}, std::vector<const char*>{field::accelP, "pressureSweepState"}}) {
+    ParticleSystem ps = fluidBlob(sampleBox(Vec3::Zero(), Vec3::Constant(0.08), kR), Vec3(0.0, -1.0, 0.0));
+    for (const char* name : read) ps[0].addVec3(name, Output);
+    Solver solver(std::move(ps), FluidProperties{}, {}, SolverSettings{}, fixedStep(1e-3), RunState{});
+    solver.step(1e-3);
+    const ParticleSet& fluid = solver.particles()[0];
+    for (std::size_t a = 0; a < names.size(); ++a)
+      for (std::size_t b = a + 1; b < names.size(); ++b)
+        EXPECT_NE(&fluid.vec3(names[a]), &fluid.vec3(names[b]))
+            << names[a] << " and " << names[b] << " read: " << read[0];
+  }
+}
+
 TEST(PressureSolve, CompressedBlobExpandsConservingMomentum) {
   // A blob at 0.9 x the lattice spacing is compressed; pressure pushes it apart with equal and opposite
   // pair forces (METHOD.md §6.7): total momentum stays zero, pi >= 0, the density error drops.
