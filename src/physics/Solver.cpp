@@ -367,13 +367,9 @@ void Solver::registerSolveFields(ParticleSet& set) const {
   // array holds both (5.4 MB of the published Seep at r = 1 cm); the pressure solve's rho~*, residuals and last pi
   // likewise take the CG's q (5.4 MB). A lagged a^p is kept from step to step, and arrays of these names a time
   // directory brought along (a user's own) stay fields of their own.
-  const auto shareable = [&set](const char* name, const char* storage) {
-    const ParticleSet::FieldInfo* held = set.info(storage);
-    return !set.has(name) && held && held->role == Scratch;
-  };
-  if (!settings_.compatibility.setSequentialPressure && shareable(field::accelP, ImplicitSolver::rightHandSideField))
+  if (!settings_.compatibility.setSequentialPressure && set.canShare(field::accelP, ImplicitSolver::rightHandSideField))
     set.share(field::accelP, ImplicitSolver::rightHandSideField);
-  if (shareable(PressureSolver::sweepStateField, ImplicitSolver::productField))
+  if (set.canShare(PressureSolver::sweepStateField, ImplicitSolver::productField))
     set.share(PressureSolver::sweepStateField, ImplicitSolver::productField);
   PressureSolver::registerFields(set, settings_.compatibility);
 }

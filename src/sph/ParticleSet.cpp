@@ -103,9 +103,13 @@ ParticleSet::FieldBase* ParticleSet::find(const std::string& name) const {
   return nullptr;
 }
 
+bool ParticleSet::canShare(const std::string& name, const std::string& storage) const {
+  const FieldInfo* target = info(storage);
+  return target && target->role == Scratch && !has(name);
+}
+
 void ParticleSet::share(const std::string& name, const std::string& storage) {
-  const FieldBase* target = find(storage);
-  if (!target || target->info.role != Scratch || has(name))
+  if (!canShare(name, storage))
     throw std::logic_error("particle set '" + name_ + "': field '" + name + "' cannot share the storage of '" +
                            storage + "' (it must be an unregistered name, and '" + storage +
                            "' a registered scratch field)");

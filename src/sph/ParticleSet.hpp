@@ -65,6 +65,8 @@ public:
   /// that acts on all fields see `storage` only. Call before `name` is registered; registering it as anything but
   /// scratch is then a logic error.
   void share(const std::string& name, const std::string& storage);
+  /// Whether share(name, storage) would be allowed: `name` unregistered, `storage` a registered scratch field.
+  bool canShare(const std::string& name, const std::string& storage) const;
 
   bool has(const std::string& name) const;
   const FieldInfo* info(const std::string& name) const;
