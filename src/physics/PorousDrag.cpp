@@ -1,8 +1,6 @@
 #include "physics/PorousDrag.hpp"
 
-#include "core/Memory.hpp"
 #include "core/Parallel.hpp"
-#include "physics/CouplingDensity.hpp"
 
 namespace poro {
 
@@ -17,7 +15,33 @@ auto pairsBefore(const NeighbourList& list) {
 
 double PorousDrag::coefficient(double mu, double massI, double rhoMix, double massT, double rhoT, double distance2,
                                double regulariser) {
-  return kDragFactor * mu * (massI / rhoMix) * (massT / rhoT) / (distance2 + regulariser);
+  return pairFactor(kDragFactor * mu * massI * massT, rhoMix * rhoT, distance2, regulariser, 1.0);
+}
+
+template <bool FluidSide, class T, class Term>
+T PorousDrag::sumOverPairsAs(const Side& side, const NeighbourList& list, const std::vector<PairFactor>& factors,
+                             const std::vector<Vec3>& xa, const std::vector<Vec3>& xb, std::size_t a, T sum,
+                             const Term& term) {
+  // x_ab and its square flip exactly with the side, and the densities' product commutes: both sides of a pair
+  // form the same K s.
+  const double selfDensity = FluidSide ? side.rhoMix(a) : side.rhoSolid(a);
+  std::size_t q = list.offset(a);
+  for (Index bIndex : list.of(a)) {
+    const std::size_t b = static_cast<std::size_t>(bIndex);
+    const Vec3 xab = xa[a] - xb[b];
+    const double otherDensity = FluidSide ? side.rhoSolid(b) : side.rhoMix(b);
+    term(sum, b, xab,
+         pairFactor(side.numerator, selfDensity * otherDensity, xab.squaredNorm(), side.regulariser, factors[q++]));
+  }
+  return sum;
+}
+
+template <class T, class Term>
+T PorousDrag::sumOverPairs(const Side& side, const NeighbourList& list, const std::vector<PairFactor>& factors,
+                           const std::vector<Vec3>& xa, const std::vector<Vec3>& xb, std::size_t a, T sum,
+                           const Term& term) {
+  return side.fluidSide ? sumOverPairsAs<true>(side, list, factors, xa, xb, a, sum, term)
+                        : sumOverPairsAs<false>(side, list, factors, xa, xb, a, sum, term);
 }
 
 bool PorousDrag::enabled(const StepContext& ctx) const {
@@ -31,52 +55,25 @@ bool PorousDrag::enabled(const StepContext& ctx) const {
 
 void PorousDrag::prepare(const StepContext& ctx) {
   ctx_ = &ctx;
-  std::size_t used = 0; // sides are kept from step to step, their pair arrays refilled in place
+  sides_.clear();
   std::size_t fluidPart = 0;
   for (std::size_t p = 0; p < ctx.dynamicSets.size(); ++p)
     if (ctx.particles[ctx.dynamicSets[p]].kind() == SetKind::Fluid) fluidPart = p;
   const std::size_t fluidSet = ctx.dynamicSets[fluidPart];
   const ParticleSet& fluid = ctx.particles[fluidSet];
   const double h = ctx.kernel.supportRadius();
-  const double regulariser = 0.01 * h * h;
-
   for (std::size_t p = 0; p < ctx.dynamicSets.size(); ++p) {
     const std::size_t t = ctx.dynamicSets[p];
     const PorousMaterial* material = ctx.materials[t];
     if (!material || material->dragViscosity == 0.0) continue;
-    const ParticleSet& solid = ctx.particles[t];
-    const double mu = material->dragViscosity;
+    // K_it with i always the fluid particle, whichever side evaluates it; rho_t^n, or rho_b with
+    // couplingSolidDensity: rest (METHOD.md §10).
+    const double numerator = kDragFactor * material->dragViscosity * fluid.mass * ctx.particles[t].mass;
     const MixtureDensity rhoMix(fluid, *material);
-    const CouplingSolidDensity rhoSolid(ctx, t); // rho_t^n, or rho_b with couplingSolidDensity: rest (§10)
-    // K_it with i always the fluid particle, whichever side evaluates it.
-    auto pairK = [&](std::size_t i, std::size_t s, double distance2) {
-      return coefficient(mu, fluid.mass, rhoMix(i), solid.mass, rhoSolid(s), distance2, regulariser);
-    };
-    for (const bool fluidSide : {true, false}) {
-      if (used == sides_.size()) sides_.emplace_back();
-      Side& side = sides_[used++];
-      side.self = fluidSide ? fluidSet : t;
-      side.part = fluidSide ? fluidPart : p;
-      side.other = fluidSide ? t : fluidSet;
-      side.otherPart = fluidSide ? p : fluidPart;
-      const NeighbourList& list = ctx.search.list(side.self, side.other);
-      const auto& gradients = ctx.gradients.of(side.self, side.other);
-      const auto& xSelf = ctx.particles[side.self].x();
-      const auto& xOther = ctx.particles[side.other].x();
-      memory::resizeForRefill(side.pairCoefficient, list.totalPairs());
-      parallel::forEachBalanced(xSelf.size(), pairsBefore(list), [&](std::size_t a) {
-        std::size_t q = list.offset(a);
-        for (Index bIndex : list.of(a)) {
-          const std::size_t b = static_cast<std::size_t>(bIndex);
-          const double d2 = (xSelf[a] - xOther[b]).squaredNorm();
-          const double k = fluidSide ? pairK(a, b, d2) : pairK(b, a, d2);
-          side.pairCoefficient[q] = k * gradients[q];
-          ++q;
-        }
-      });
-    }
+    const CouplingSolidDensity rhoSolid(ctx, t);
+    sides_.push_back({fluidSet, fluidPart, t, p, true, rhoMix, rhoSolid, numerator, 0.01 * h * h});
+    sides_.push_back({t, p, fluidSet, fluidPart, false, rhoMix, rhoSolid, numerator, 0.01 * h * h});
   }
-  sides_.resize(used);
 }
 
 void PorousDrag::addApply(const linalg::BlockVector& u, const linalg::BlockVector& au) const {
@@ -89,14 +86,11 @@ void PorousDrag::addApply(const linalg::BlockVector& u, const linalg::BlockVecto
     const Vec3* ua = u[side.part].data;
     const Vec3* ub = u[side.otherPart].data;
     Vec3* out = au[side.part].data;
+    const auto& factors = ctx_->gradients.of(side.self, side.other);
     parallel::forEachBalanced(u[side.part].size, pairsBefore(list), [&](std::size_t a) {
-      Vec3 force = Vec3::Zero();
-      std::size_t q = list.offset(a);
-      for (Index bIndex : list.of(a)) {
-        const std::size_t b = static_cast<std::size_t>(bIndex);
-        const Vec3 xab = xa[a] - xb[b];
-        force += (side.pairCoefficient[q++] * (ua[a] - ub[b]).dot(xab)) * xab;
-      }
+      const Vec3 force = sumOverPairs(
+          side, list, factors, xa, xb, a, Vec3(Vec3::Zero()),
+          [&](Vec3& sum, std::size_t b, const Vec3& xab, double ks) { sum += (ks * (ua[a] - ub[b]).dot(xab)) * xab; });
       out[a] -= dt * force;
     });
   }
@@ -112,14 +106,11 @@ void PorousDrag::addDiagonal(const linalg::BlockDiagonal& d) const {
     Mat3* out = d[side.part].data;
     const std::size_t first = d[side.part].first;
     const auto work = [&](std::size_t k) { return pairsBefore(list)(first + k) - pairsBefore(list)(first); };
+    const auto& factors = ctx_->gradients.of(side.self, side.other);
     parallel::forEachBalanced(d[side.part].size, work, [&](std::size_t k) {
-      const std::size_t a = first + k;
-      Mat3 block = Mat3::Zero();
-      std::size_t q = list.offset(a);
-      for (Index bIndex : list.of(a)) {
-        const Vec3 xab = xa[a] - xb[static_cast<std::size_t>(bIndex)];
-        addOuter(block, side.pairCoefficient[q++] * xab, xab);
-      }
+      const Mat3 block =
+          sumOverPairs(side, list, factors, xa, xb, first + k, Mat3(Mat3::Zero()),
+                       [](Mat3& sum, std::size_t, const Vec3& xab, double ks) { addOuter(sum, ks * xab, xab); });
       out[k] -= dt * block;
     });
   }
