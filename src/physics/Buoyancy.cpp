@@ -13,6 +13,11 @@ bool Buoyancy::enabled(const StepContext& ctx) const {
 }
 
 void Buoyancy::forces(const StepContext& ctx, std::size_t t, std::vector<Vec3>& force) {
+  force.assign(ctx.particles[t].size(), Vec3::Zero());
+  addForces(ctx, t, 1.0, force.data());
+}
+
+void Buoyancy::addForces(const StepContext& ctx, std::size_t t, double factor, Vec3* out) {
   const std::size_t fluidSet = static_cast<std::size_t>(fluidSetOf(ctx));
   const ParticleSet& fluid = ctx.particles[fluidSet];
   const ParticleSet& solid = ctx.particles[t];
@@ -22,7 +27,6 @@ void Buoyancy::forces(const StepContext& ctx, std::size_t t, std::vector<Vec3>& 
   const NeighbourList& list = ctx.search.list(t, fluidSet);
   const auto& gradients = ctx.gradients.of(t, fluidSet);
   const double scale = -(1.0 - ctx.materials[t]->porosity) * solid.particleVolume * fluid.mass;
-  force.resize(solid.size());
   parallel::forEach(solid.size(), [&](std::size_t s) {
     Vec3 sum = Vec3::Zero();
     std::size_t q = list.offset(s);
@@ -30,19 +34,15 @@ void Buoyancy::forces(const StepContext& ctx, std::size_t t, std::vector<Vec3>& 
       const std::size_t j = static_cast<std::size_t>(jIndex);
       sum += (pi[j] * gradients[q++]) * (xs[s] - xf[j]);
     }
-    force[s] = scale * sum;
+    const Vec3 force = scale * sum;
+    out[s] += factor * force;
   });
 }
 
 void Buoyancy::addRhs(const linalg::BlockVector& b) const {
-  std::vector<Vec3> force;
   for (std::size_t p = 0; p < ctx_->dynamicSets.size(); ++p) {
     const std::size_t t = ctx_->dynamicSets[p];
-    if (!ctx_->materials[t]) continue;
-    forces(*ctx_, t, force);
-    Vec3* out = b[p].data;
-    const double dt = ctx_->dt;
-    parallel::forEach(force.size(), [&](std::size_t s) { out[s] += dt * force[s]; });
+    if (ctx_->materials[t]) addForces(*ctx_, t, ctx_->dt, b[p].data);
   }
 }
 
