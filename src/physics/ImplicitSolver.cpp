@@ -126,12 +126,13 @@ void ImplicitSolver::formPreconditioner(const StepContext& ctx) {
     largest = std::max(largest, inverseDiagonal_[p].size());
   }
   const std::size_t width = std::min(kDiagonalWindow, largest);
-  std::vector<Mat3> blocks(parts * width);
+  diagonalWindow_.resize(parts * width);
+  Mat3* blocks = diagonalWindow_.data();
   for (std::size_t first = 0; first < largest; first += width) {
     linalg::BlockDiagonal window;
     for (std::size_t p = 0; p < parts; ++p) {
       const std::size_t size = inverseDiagonal_[p].size();
-      window.push_back({blocks.data() + p * width, first < size ? std::min(width, size - first) : 0, first});
+      window.push_back({blocks + p * width, first < size ? std::min(width, size - first) : 0, first});
     }
     diagonal(window);
     for (std::size_t p = 0; p < parts; ++p) {
