@@ -3,7 +3,8 @@
 # tutorial in tutorials/published/, at the resolution and over the interval of its row, at the paper's fixed
 # dt = 1 ms, run once per mode and thread count from the same sampled 0/. Prints one Markdown row per run:
 # particles, ms/step, microseconds per particle-step, phase split, pressure sweeps and CG iterations per
-# step, peak resident memory (GNU time) and bytes per particle.
+# step, peak resident memory (GNU time) and bytes per particle. Before and after the table, the machine's own 1 -> 2
+# thread speed-up on pure arithmetic (bench_kernels' ParallelGrain, when built), to read the efficiencies against.
 #
 # usage: bench/publishedSets.sh [BUILD_DIR] [SETS] [MODES] [THREADS]
 #   BUILD_DIR  build tree holding bin/poroSph and bin/sampleParticles                   (default: <repo>/build)
@@ -55,6 +56,25 @@ trap 'rm -rf "$work"' EXIT
 # Sets a top-level key of a YAML dictionary, replacing its line.
 set_key() { sed -i "s|^$2:.*|$2: $3|" "$1"; }
 
+# The machine's own 1 -> 2 thread speed-up on loops of pure arithmetic (bench_kernels' ParallelGrain, 8,192 items,
+# medians of 3), printed before and after the table: the cores here do not always run at one speed, and a row's
+# efficiency is to be read against this.
+machine_speedup() {
+  local bench="$build/bin/bench_kernels"
+  if [[ ! -x "$bench" ]]; then
+    echo "machine speed-up: $bench not built (Google Benchmark missing?), not measured"
+    return
+  fi
+  "$bench" --benchmark_filter='ParallelGrain/threads:./items:8192' --benchmark_repetitions=3 \
+           --benchmark_report_aggregates_only=true --benchmark_format=csv 2>/dev/null |
+    awk -F, -v when="$1" '$1 ~ /_median"$/ { t = ($1 ~ /threads:1\//) ? 1 : 2; us[t] = $3 }
+      END { if (us[1] > 0 && us[2] > 0)
+              printf "machine speed-up %s the table (ParallelGrain, 8,192 items, 1 -> 2 threads): %.2f\n", when, us[1] / us[2]
+            else print "machine speed-up " when " the table: not measured" }'
+}
+
+machine_speedup before
+echo
 echo "| set | mode | threads | particles (fluid + porous / walls) | ms/step | µs per particle-step (all) | search / densities / implicit / pressure % | sweeps/step | CG/step | peak RSS MiB | bytes/particle |"
 echo "|---|---|---|---|---|---|---|---|---|---|---|"
 for set in $sets; do
@@ -128,3 +148,5 @@ for set in $sets; do
     done
   done
 done
+echo
+machine_speedup after
