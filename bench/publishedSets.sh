@@ -8,9 +8,10 @@
 #
 # usage: bench/publishedSets.sh [BUILD_DIR] [SETS] [MODES] [THREADS]
 #   BUILD_DIR  build tree holding bin/poroSph and bin/sampleParticles                   (default: <repo>/build)
-#   SETS       of: seep-r2cm float-r2.5cm climb-r2cm seep-r1cm seep-r1.5cm  (default: the first three;
-#              seep-r1cm takes about 5 minutes a run on 2 cores; seep-r1.5cm is the middle resolution of the
-#              cost-per-particle-step comparison, with seep-r2cm and seep-r1cm)
+#   SETS       of: seep-r2cm float-r2.5cm climb-r2cm seep-r1cm seep-r1.5cm climb-r1cm climb-r1.5cm
+#              (default: the first three; seep-r1cm takes about 5 minutes a run on 2 cores; seep-r1.5cm and
+#              climb-r1.5cm are the middle resolutions of the cost-per-particle-step comparison, with the r = 2 and
+#              1 cm sets; Climb's rows of it run 0-0.3 s, so STEPS=300 for climb-r2cm)
 #   MODES      of: paper reference                                                      (default: both)
 #   THREADS    thread counts, RUNS runs each                                            (default: "1 2")
 # environment: STEPS=N runs N steps of every set instead of its row's interval (a quick look); RUNS=N runs each
@@ -47,6 +48,8 @@ declare -A row=(
   [climb-r2cm]="climb 1000"   # 0-1 s
   [seep-r1cm]="seep 300"      # 0-0.3 s, the published set: landing and first contact
   [seep-r1.5cm]="seep 300"    # 0-0.3 s, between the two above (cost per particle-step against resolution)
+  [climb-r1cm]="climb 300"    # 0-0.3 s, the published set
+  [climb-r1.5cm]="climb 300"  # 0-0.3 s, with climb-r2cm and climb-r1cm: cost per particle-step in a slow flow
 )
 for set in $sets; do [[ -n "${row[$set]:-}" ]] || die "unknown set '$set' (${!row[*]})"; done
 
