@@ -68,8 +68,8 @@ machine_speedup() {
     echo "machine speed-up: $bench not built (Google Benchmark missing?), not measured"
     return
   fi
-  "$bench" --benchmark_filter='ParallelGrain/threads:./items:8192' --benchmark_repetitions=3 \
-           --benchmark_report_aggregates_only=true --benchmark_format=csv 2>/dev/null |
+  { "$bench" --benchmark_filter='ParallelGrain/threads:./items:8192' --benchmark_repetitions=3 \
+             --benchmark_report_aggregates_only=true --benchmark_format=csv 2>/dev/null || true; } |
     awk -F, -v when="$1" '$1 ~ /_median"$/ { t = ($1 ~ /threads:1\//) ? 1 : 2; us[t] = $3 }
       END { if (us[1] > 0 && us[2] > 0)
               printf "machine speed-up %s the table (ParallelGrain, 8,192 items, 1 -> 2 threads): %.2f\n", when, us[1] / us[2]
