@@ -14,7 +14,9 @@
 
 namespace {
 
-/// Dependent multiply-adds per item: about 0.1 microseconds on one core, the order of one particle of a pair loop.
+/// Dependent multiply-adds per item. The compiler runs several items' chains side by side, so an item takes about
+/// 12 ns on one core here: 1,024, 8,192 and 65,536 items take about 13, 95 and 770 µs, the lengths of the solver's
+/// short loops (over particles) and long ones (over pairs) at r = 2 cm.
 constexpr int kChainLength = 32;
 
 void BM_ParallelGrain(benchmark::State& state) {
