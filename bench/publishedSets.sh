@@ -65,7 +65,7 @@ set_key() { sed -i "s|^$2:.*|$2: $3|" "$1"; }
 machine_speedup() {
   local bench="$build/bin/bench_kernels"
   if [[ ! -x "$bench" ]]; then
-    echo "machine speed-up: $bench not built (Google Benchmark missing?), not measured"
+    echo "machine speed-up $1 the table: not measured ($bench not built: Google Benchmark missing?)"
     return
   fi
   { "$bench" --benchmark_filter='ParallelGrain/threads:./items:8192' --benchmark_repetitions=3 \
