@@ -101,6 +101,26 @@ double partnerProjection(const std::vector<PartnerView>& partners, const Vec3& x
   }
   return sum;
 }
+/// The sum and the largest of a set's residuals in one pass over them (parallel::sum's blocking: the same sum).
+struct ResidualSummary {
+  double sum = 0.0;
+  double max = 0.0; // residuals are compressions, >= 0
+  ResidualSummary& operator+=(const ResidualSummary& other) {
+    sum += other.sum;
+    max = std::max(max, other.max);
+    return *this;
+  }
+};
+
+/// Particles of set a a sweep updates, over all ranks: the fixed ones keep pi = 0 and count for nothing.
+double activeParticles(const StepContext& ctx, std::size_t a) {
+  const std::int64_t* fixed = fixedFlags(ctx.particles[a]);
+  const std::size_t n = ctx.owned(a);
+  const std::size_t active =
+      fixed ? parallel::sum<std::size_t>(n, [&](std::size_t i) -> std::size_t { return fixed[i] ? 0 : 1; }) : n;
+  return ctx.sumOverRanks(static_cast<double>(active));
+}
+
 /// p = pi rho^2 / rho^max (METHOD.md §6.7), in one place: formPressures() must give solve()'s values to the bit.
 double pressureOf(double pi, double density, double rhoMax) { return pi * density * density / rhoMax; }
 } // namespace
@@ -251,13 +271,16 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
   const double omega = settings_.relaxation;
   const double tolerance = settings_.maxDensityError / 100.0;
   PressureStats stats;
+  std::vector<double> active; // by position in `sets`: fixed flags do not change within a solve
+  for (std::size_t a : sets) active.push_back(activeParticles(ctx, a));
   double weight = 1.0;
   for (int it = 1; it <= settings_.maxIterations; ++it) {
     if (settings_.chebyshev) weight = chebyshevWeight(it, settings_.spectralRadius, weight);
     computeAccelerations(ctx, sets);
     // Residuals use a^p of the sweep's start only, so updating pi set by set is pure Jacobi across sets.
     double worstMean = 0.0, worstMax = 0.0;
-    for (std::size_t a : sets) {
+    for (std::size_t k = 0; k < sets.size(); ++k) {
+      const std::size_t a = sets[k];
       ParticleSet& set = ctx.particles[a];
       const auto& x = set.x();
       const auto& object = set.integer(field::objectId);
@@ -305,13 +328,13 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
           kappa[i] = g2 > 0.0 ? std::max(kappa[i] - omega * rc / (dt2 * g2), 0.0) : 0.0;
         }
       });
-      const auto residualOf = [&](std::size_t i) { return state[i][kResidual]; };
-      const double errorSum = parallel::sum<double>(n, residualOf);
-      const double active = ctx.sumOverRanks(static_cast<double>(
-          fixed ? parallel::sum<std::size_t>(n, [&](std::size_t i) -> std::size_t { return fixed[i] ? 0 : 1; }) : n));
-      const double mean = active > 0 ? ctx.sumOverRanks(errorSum) / active : 0.0;
+      const ResidualSummary residuals = parallel::sum<ResidualSummary>(n, [&](std::size_t i) {
+        const double r = state[i][kResidual];
+        return ResidualSummary{r, r};
+      });
+      const double mean = active[k] > 0 ? ctx.sumOverRanks(residuals.sum) / active[k] : 0.0;
       worstMean = std::max(worstMean, mean);
-      worstMax = std::max(worstMax, ctx.maxOverRanks(parallel::max(n, 0.0, residualOf)));
+      worstMax = std::max(worstMax, ctx.maxOverRanks(residuals.max));
     }
     ctx.refreshGhosts({field::pi, field::contactPressure});
     stats.iterations = it;
