@@ -1,6 +1,7 @@
 #include "linalg/ConjugateGradient.hpp"
 
 #include "core/Error.hpp"
+#include "core/Parallel.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -13,6 +14,41 @@ bool sameStorage(const BlockVector& a, const BlockVector& b) {
   for (std::size_t p = 0; p < a.size(); ++p)
     if (a[p].data != b[p].data) return false;
   return true;
+}
+
+/// The squares an iteration needs after its step: r.r (convergence) and r.z (the next direction).
+struct ResidualProducts {
+  double rr = 0.0;
+  double rz = 0.0;
+  ResidualProducts& operator+=(const ResidualProducts& other) {
+    rr += other.rr;
+    rz += other.rz;
+    return *this;
+  }
+};
+
+/// x += alpha p, r -= alpha q, z = M r (or r without a preconditioner), and r.r, r.z: one pass over the vectors
+/// where axpy, axpy, dot, multiply, dot made five. The sums keep dot()'s blocking, so every bit is as in five passes.
+/// z may share q's storage: element i of q is read before element i of z is written.
+ResidualProducts stepAndPrecondition(double alpha, const BlockVector& p, const BlockVector& q, const BlockVector& x,
+                                     const BlockVector& r, const BlockPreconditioner& inverseDiagonal,
+                                     const BlockVector& z) {
+  ResidualProducts total;
+  for (std::size_t part = 0; part < x.size(); ++part) {
+    const Vec3* ps = p[part].data;
+    const Vec3* qs = q[part].data;
+    Vec3* xs = x[part].data;
+    Vec3* rs = r[part].data;
+    Vec3* zs = z[part].data;
+    const SymmetricBlock* m = inverseDiagonal.empty() ? nullptr : inverseDiagonal[part].data;
+    total += parallel::sum<ResidualProducts>(x[part].size, [&](std::size_t i) {
+      xs[i] += alpha * ps[i];
+      rs[i] += -alpha * qs[i];
+      zs[i] = m ? Vec3(m[i] * rs[i]) : rs[i];
+      return ResidualProducts{rs[i].dot(rs[i]), rs[i].dot(zs[i])};
+    });
+  }
+  return total;
 }
 } // namespace
 
@@ -59,17 +95,16 @@ CgResult solveCg(const BlockOperator& a, const BlockPreconditioner& inverseDiago
       throw NumericalError(msg.str());
     }
     const double alpha = rz / pq;
-    axpy(alpha, work.p, x);
-    axpy(-alpha, work.q, work.r);
-    normR = std::sqrt(dot(work.r, work.r));
+    ResidualProducts products = stepAndPrecondition(alpha, work.p, work.q, x, work.r, inverseDiagonal, work.z);
+    if (settings.sumOverRanks) products = {settings.sumOverRanks(products.rr), settings.sumOverRanks(products.rz)};
+    normR = std::sqrt(products.rr);
     result.iterations = it;
     result.relativeResidual = normR / normB;
     if (result.relativeResidual <= settings.tolerance) {
       result.converged = true;
       return result;
     }
-    precondition(work.r, work.z);
-    const double rzNew = dot(work.r, work.z);
+    const double rzNew = products.rz;
     xpay(work.z, rzNew / rz, work.p);
     rz = rzNew;
   }
