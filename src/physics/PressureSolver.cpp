@@ -101,6 +101,7 @@ double partnerProjection(const std::vector<PartnerView>& partners, const Vec3& x
   }
   return sum;
 }
+
 /// The sum and the largest of a set's residuals in one pass over them (parallel::sum's blocking: the same sum).
 struct ResidualSummary {
   double sum = 0.0;
