@@ -60,8 +60,8 @@ trap 'rm -rf "$work"' EXIT
 set_key() { sed -i "s|^$2:.*|$2: $3|" "$1"; }
 
 # The machine's own 1 -> 2 thread speed-up on loops of pure arithmetic (bench_kernels' ParallelGrain, 8,192 items,
-# medians of 3), printed before and after the table: the cores here do not always run at one speed, and a row's
-# efficiency is to be read against this.
+# medians of 3), printed before and after the table with the two times: the cores here do not always run at one
+# speed, and a row's efficiency is to be read against the ratio, its ms/step against the 1-thread time.
 machine_speedup() {
   local bench="$build/bin/bench_kernels"
   if [[ ! -x "$bench" ]]; then
@@ -72,7 +72,8 @@ machine_speedup() {
              --benchmark_report_aggregates_only=true --benchmark_format=csv 2>/dev/null || true; } |
     awk -F, -v when="$1" '$1 ~ /_median"$/ { t = ($1 ~ /threads:1\//) ? 1 : 2; us[t] = $3 }
       END { if (us[1] > 0 && us[2] > 0)
-              printf "machine speed-up %s the table (ParallelGrain, 8,192 items, 1 -> 2 threads): %.2f\n", when, us[1] / us[2]
+              printf "machine speed-up %s the table (ParallelGrain, 8,192 items, 1 -> 2 threads): %.2f (%.1f / %.1f µs)\n",
+                     when, us[1] / us[2], us[1], us[2]
             else print "machine speed-up " when " the table: not measured" }'
 }
 
