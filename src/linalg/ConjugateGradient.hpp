@@ -29,8 +29,8 @@ struct CgResult {
 };
 
 /// Work vectors the caller provides (views over scratch fields of the particle sets). z may share q's storage
-/// (z = M^-1 r is dead once it has entered p, before q = A p is formed), and r may share b's (b is read once,
-/// into r; it is overwritten then).
+/// (z = M^-1 r is dead once it has entered p, before q = A p is formed; the pass that forms z reads each element of
+/// q before it writes that element of z), and r may share b's (b is read once, into r; it is overwritten then).
 struct CgWork {
   BlockVector r, z, p, q;
 };
