@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <limits>
 
 namespace poro {
 
@@ -271,6 +272,8 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
   const double dt2 = ctx.dt * ctx.dt;
   const double omega = settings_.relaxation;
   const double tolerance = settings_.maxDensityError / 100.0;
+  const double particleBound = settings_.maxParticleDensityError > 0.0 ? settings_.maxParticleDensityError / 100.0
+                                                                       : std::numeric_limits<double>::infinity();
   PressureStats stats;
   std::vector<double> active; // by position in `sets`: fixed flags do not change within a solve
   for (std::size_t a : sets) active.push_back(activeParticles(ctx, a));
@@ -341,7 +344,7 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
     stats.iterations = it;
     stats.meanError = 100.0 * worstMean;
     stats.maxError = 100.0 * worstMax;
-    if (it >= settings_.minIterations && worstMean <= tolerance) {
+    if (it >= settings_.minIterations && worstMean <= tolerance && worstMax <= particleBound) {
       stats.converged = true;
       break;
     }

@@ -61,6 +61,8 @@ SolverSettings SolverSettings::read(const Dictionary& dict) {
   if (auto p = dict.optionalSubDict("pressure")) {
     auto& ps = s.pressure;
     ps.maxDensityError = p->getReal("maxDensityError", ps.maxDensityError, Range::positive());
+    ps.maxParticleDensityError =
+        p->getReal("maxParticleDensityError", ps.maxParticleDensityError, Range::nonNegative());
     ps.minIterations = static_cast<int>(p->getInt("minIterations", ps.minIterations, Range::closed(1, 1e6)));
     ps.maxIterations = static_cast<int>(p->getInt("maxIterations", ps.maxIterations, Range::closed(1, 1e6)));
     if (ps.minIterations > ps.maxIterations)

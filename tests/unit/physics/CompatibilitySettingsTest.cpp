@@ -166,6 +166,26 @@ TEST(PressureAcceleration, BadValuesAreInputErrorsWithFileAndLine) {
   }
 }
 
+TEST(PressureParticleBound, OffByDefaultInTheStructAndTheFileAndReadInPercent) {
+  // The mean alone is the published criterion; a bound on single particles is asked for (0 = none).
+  EXPECT_EQ(pressure("threads: 0\n").maxParticleDensityError, 0.0);
+  const SolverSettings file =
+      SolverSettings::read(Dictionary::read(std::string(POROSPH_TEST_DATA) + "/../../etc/caseDicts/solverDict"));
+  EXPECT_EQ(file.pressure.maxParticleDensityError, SolverSettings{}.pressure.maxParticleDensityError);
+  EXPECT_EQ(pressure("pressure: {maxParticleDensityError: 0.3}\n").maxParticleDensityError, 0.3);
+  EXPECT_EQ(
+      pressure("compatibility: {preset: paper}\npressure: {maxParticleDensityError: 0.3}\n").maxParticleDensityError,
+      0.3);
+  try {
+    pressure("threads: 0\npressure: {maxParticleDensityError: -0.1}\n");
+    ADD_FAILURE() << "no InputError for a negative bound";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("system/solverDict:2"), std::string::npos) << message;
+    EXPECT_NE(message.find("maxParticleDensityError"), std::string::npos) << message;
+  }
+}
+
 double xsph(const std::string& text) { return SolverSettings::read(Dictionary::parse(text, "system/solverDict")).xsph; }
 
 TEST(Xsph, OffByDefaultAndTheKeyWinsOverAnyPreset) {
