@@ -127,6 +127,7 @@ void Elasticity::prepareBody(const StepContext& ctx, Body& body) {
           break;
         }
   }
+  body.hourglass.prepare(rest, restX, ctx.kernel, material.hourglassControl * mu, n, body.stressed);
   body.forEachStressed(n, [&](std::size_t s) {
     // Rotation first (METHOD.md §6.5.2).
     const Mat3 f = deformationGradient(rest, x, s);
@@ -192,6 +193,7 @@ void Elasticity::addApply(const linalg::BlockVector& u, const linalg::BlockVecto
       body.stress[s] = rest.volume(s) * (stressOf(eps, body.shear(s), body.volumetric(s)) * rl);
     });
     parallel::forEach(n, [&](std::size_t s) { out[s] -= dt * force(body, body.stress, s); });
+    if (body.hourglass.enabled()) body.hourglass.addForces(v, n, -dt * dt, out); // -dt f(dt u) = dt^2 K u
   }
 }
 
@@ -235,6 +237,7 @@ void Elasticity::addDiagonal(const linalg::BlockDiagonal& d) const {
       }
       const Vec3 g = (rotation[s] * rest.correction(s)) * rest.gradientSum(s);
       out[k] += dt2 * (v0 * stiffnessBlock(g, body.shear(s), body.volumetric(s)) + v0 * v0 * neighbours);
+      if (body.hourglass.enabled()) out[k].diagonal().array() += dt2 * body.hourglass.diagonal(s);
     });
   }
 }
@@ -245,6 +248,8 @@ void Elasticity::addRhs(const linalg::BlockVector& b) const {
     if (!body.stressOfPositions) throw std::logic_error("Elasticity::addRhs after addApply: prepare() again first");
     Vec3* out = b[body.part].data;
     parallel::forEach(b[body.part].size, [&](std::size_t s) { out[s] += dt * force(body, body.stress, s); });
+    if (body.hourglass.enabled())
+      body.hourglass.addForces(ctx_->particles[body.set].x().data(), b[body.part].size, dt, out);
   }
 }
 

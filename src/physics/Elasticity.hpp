@@ -11,11 +11,12 @@
 /// The velocity part is the Hessian of sum_s V0_s eps_s:C_s:eps_s / 2, so it is symmetric positive
 /// semi-definite; elastic links never span two objects. Compatibility switches (METHOD.md §10):
 /// volumetricStress unitLambda drops lambda from the volumetric term, bloatingStress lambdaScaled multiplies
-/// eta_bloat by lambda.
+/// eta_bloat by lambda. Optional zero-energy-mode control (not in the paper): HourglassControl.hpp.
 /// Keys: constant/porosityProperties <material>.{youngsModulus, poissonsRatio, bloating, shearSoftening,
-/// volumeSoftening}.
+/// volumeSoftening, hourglassControl}.
 
 #include "physics/ElasticRestState.hpp"
+#include "physics/HourglassControl.hpp"
 #include "physics/ImplicitTerm.hpp"
 
 #include <vector>
@@ -59,6 +60,7 @@ private:
     /// among their rest neighbours, not the ghosts lent only to complete those ghosts' sums; empty: all.
     std::vector<Index> stressed;
     template <class F> void forEachStressed(std::size_t n, const F& f) const;
+    HourglassControl hourglass; ///< off unless the material sets hourglassControl
   };
   void prepareBody(const StepContext& ctx, Body& body);
   /// F_s = V0_s sum_t V0_t (M_s + M_t) gradW(X_s - X_t) for a per-particle field M = P R L, given the volume-weighted

@@ -55,6 +55,7 @@ PorousMaterial readMaterial(const std::string& name, const Dictionary& m) {
   p.dragViscosity = m.getReal("dragViscosity", p.dragViscosity, Range::nonNegative());
   p.youngsModulus = m.getReal("youngsModulus", p.youngsModulus, Range::nonNegative());
   p.poissonsRatio = m.getReal("poissonsRatio", p.poissonsRatio, Range::open(-1.0, 0.5));
+  p.hourglassControl = m.getReal("hourglassControl", p.hourglassControl, Range::nonNegative());
   p.capillaryStrength = m.getReal("capillaryStrength", p.capillaryStrength, Range::nonNegative());
   p.capillaryFalloff = m.getReal("capillaryFalloff", p.capillaryFalloff, Range::closed(0.0, 1.0));
   p.bloating = m.getReal("bloating", p.bloating, Range::any());

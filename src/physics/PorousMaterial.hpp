@@ -26,6 +26,7 @@ struct PorousMaterial {
   // Keys of the elastic and capillary terms (METHOD.md §6.5.4, §6.5.6) and of solid damping (§6.5.3).
   double youngsModulus = 0.0;            ///< E [Pa]
   double poissonsRatio = 0.3;            ///< nu_P, -1 < nu_P < 0.5
+  double hourglassControl = 0.0;         ///< zero-energy-mode control, times mu (HourglassControl.hpp); 0: off
   double capillaryStrength = 0.0;        ///< C^cap,0 [N/m]
   double capillaryFalloff = 0.0;         ///< eta_cap in [0, 1]
   double bloating = 0.0;                 ///< eta_bloat [Pa]

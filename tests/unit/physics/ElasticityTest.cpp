@@ -41,8 +41,9 @@ Mat3 rotationAbout(const Vec3& axis, double angle) {
 /// after the rest state X was taken; an optional second block is another object of the same material.
 class ElasticBlock : public ::testing::Test {
 protected:
-  void build(const PorousMaterial& m, bool secondObject = false, bool jitter = false) {
-    std::vector<Vec3> x = sampleBox(Vec3::Zero(), Vec3(0.12, 0.1, 0.08), kR);
+  void build(const PorousMaterial& m, bool secondObject = false, bool jitter = false,
+             const Vec3& size = Vec3(0.12, 0.1, 0.08)) {
+    std::vector<Vec3> x = sampleBox(Vec3::Zero(), size, kR);
     if (jitter) {
       std::mt19937 rng(5);
       std::uniform_real_distribution<double> d(-0.2 * kR, 0.2 * kR);
@@ -83,6 +84,9 @@ protected:
     for (std::size_t i = 0; i < f.size(); ++i) f[i] = b[0].data[i] / kDt;
     return f;
   }
+  /// At a rigidly rotated rest pose the position-part force is linear in x to first order (the rotation's change is
+  /// skew and drops out of sym): [F^x(x + h w) - F^x(x - h w)] / 2h = F^u(w) / dt.
+  void checkVelocityPartLinearisesPositionPart(const PorousMaterial& m);
   /// Scale of one particle's elastic force for a strain of 1: E V0 / H.
   double forceScale(const PorousMaterial& m) const { return m.youngsModulus * std::pow(2 * kR, 3) / (4 * kR); }
 
@@ -500,9 +504,17 @@ TEST_F(TwistedBlock, SoftBodysPreconditionerIsWithinTheNeighboursRotationsOfTheD
 }
 
 TEST_F(ElasticBlock, VelocityPartIsTheLinearisationOfThePositionPart) {
-  // At a rigidly rotated rest pose the position-part force is linear in x to first order (the rotation's
-  // change is skew and drops out of sym): [F^x(x + h w) - F^x(x - h w)] / 2h = F^u(w) / dt.
-  const PorousMaterial m = rubber(2.5e5, 0.3);
+  checkVelocityPartLinearisesPositionPart(rubber(2.5e5, 0.3));
+}
+
+TEST_F(ElasticBlock, VelocityPartIsTheLinearisationOfThePositionPartWithHourglassControl) {
+  // The control's matrix part (dt^2 K u) and its right-hand side (-dt K x) with one sign and one dt each.
+  PorousMaterial m = rubber(2.5e5, 0.3);
+  m.hourglassControl = 3.0;
+  checkVelocityPartLinearisesPositionPart(m);
+}
+
+void ElasticBlock::checkVelocityPartLinearisesPositionPart(const PorousMaterial& m) {
   build(m, false, true);
   const Mat3 q = rotationAbout(Vec3(1, -1, 2), 0.5);
   deform([&](const Vec3& p) { return Vec3(q * p); }, q);
@@ -535,6 +547,193 @@ TEST_F(ElasticBlock, VelocityPartIsTheLinearisationOfThePositionPart) {
   }
   ASSERT_GT(largest, 0.0);
   EXPECT_LT(worst, 1e-5 * largest);
+}
+
+// Zero-energy-mode (hourglass) control (HourglassControl.hpp): an optional energy on what each particle's affine
+// estimate F_s misses at its rest neighbours, E = 1/2 sum_s sum_t w_st |F_s X_st - x_st|^2.
+
+/// The control of set 0's body with stiffness c, on the rest state an Elasticity term has built.
+HourglassControl controlOf(const Elasticity& term, const ParticleSet& set, const CubicKernel& kernel, double c) {
+  HourglassControl control;
+  control.prepare(term.restState(0), set.vec3(field::restPosition), kernel, c, set.size(), {});
+  return control;
+}
+
+std::vector<Vec3> controlForces(const HourglassControl& control, const std::vector<Vec3>& y) {
+  std::vector<Vec3> f(y.size(), Vec3::Zero());
+  control.addForces(y.data(), y.size(), 1.0, f.data());
+  return f;
+}
+
+TEST_F(ElasticBlock, HourglassControlIsZeroForEveryAffineMapAndConservesMomentum) {
+  // Corrected gradients reproduce linear fields at every particle, surfaces and corners included, so a stretched,
+  // sheared, turned and shifted body has no error to control; and E depends on differences only.
+  const PorousMaterial m = rubber();
+  build(m, true, true);
+  Mat3 a;
+  a << 1.05, 0.02, 0.0, -0.01, 0.97, 0.03, 0.02, 0.0, 1.01;
+  const Mat3 q = rotationAbout(Vec3(0.2, 1, -0.4), 0.9);
+  deform([&](const Vec3& p) { return Vec3(q * a * p + Vec3(0.3, -0.1, 0.2)); });
+  begin();
+  Elasticity term;
+  term.prepare(*ctx_);
+  const double c = 2.0 * m.shearModulus();
+  const HourglassControl control = controlOf(term, set(), ctx_->kernel, c);
+  const double scale = c * std::pow(2 * kR, 3) / (4 * kR); // c V0 / H: the force of an error of one spacing's size
+  const std::vector<Vec3> affine = controlForces(control, set().x());
+  for (std::size_t s = 0; s < affine.size(); ++s) EXPECT_LT(affine[s].norm(), 1e-10 * scale) << "particle " << s;
+
+  randomise(kU, 4);
+  const auto u = view(kU);
+  const std::vector<Vec3> random = controlForces(control, std::vector<Vec3>(u[0].data, u[0].data + u[0].size));
+  Vec3 total = Vec3::Zero();
+  double sum = 0.0;
+  for (const Vec3& f : random) {
+    total += f;
+    sum += f.norm();
+  }
+  ASSERT_GT(sum, 0.0);
+  EXPECT_LT(total.norm(), 1e-12 * sum);
+}
+
+TEST_F(ElasticBlock, HourglassControlResistsTheCheckerboardEq19DoesNotSee) {
+  // u_s = d (-1)^(i+j+k) e_y on the lattice: every neighbour at an odd offset moves by -2 u_s relative to s, and
+  // their gradients sum to zero by symmetry, so F_s = I and Eq. 19 exerts no force. The control's error is then
+  // eps_st = -(u_t - u_s), and deep inside (every particle within 2H interior) its force is exactly
+  // f_s = -4 u_s sum_{t odd} w_st.
+  const PorousMaterial m = rubber();
+  build(m, false, false, Vec3(0.24, 0.24, 0.24));
+  const double d = 1e-3 * kR;
+  const auto parity = [](const Vec3& p) {
+    const long long sum = std::llround(p.x() / (2 * kR) - 0.5) + std::llround(p.y() / (2 * kR) - 0.5) +
+                          std::llround(p.z() / (2 * kR) - 0.5);
+    return sum % 2 == 0 ? 1.0 : -1.0;
+  };
+  deform([&](const Vec3& p) { return Vec3(p + parity(p) * d * Vec3::UnitY()); });
+  begin();
+  Elasticity term;
+  const std::vector<Vec3> elastic = positionForces(term);
+  const double c = m.shearModulus();
+  const HourglassControl control = controlOf(term, set(), ctx_->kernel, c);
+  const std::vector<Vec3> f = controlForces(control, set().x());
+  const ElasticRestState& rest = term.restState(0);
+  const auto& X = set().vec3(field::restPosition);
+  std::size_t interior = 0;
+  for (std::size_t s = 0; s < set().size(); ++s) {
+    const Vec3 p = X[s];
+    if ((p.array() < 4 * 2 * kR).any() || (p.array() > 0.24 - 4 * 2 * kR).any()) continue;
+    ++interior;
+    double odd = 0.0;
+    for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
+      const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
+      if (parity(X[t]) == parity(p)) continue;
+      const double r2 = (X[t] - p).squaredNorm();
+      odd += c * rest.volume(s) * rest.volume(t) * ctx_->kernel.w(std::sqrt(r2)) / r2;
+    }
+    const Vec3 expected = -4.0 * odd * parity(p) * d * Vec3::UnitY();
+    ASSERT_GT(expected.norm(), 0.0);
+    EXPECT_LT((f[s] - expected).norm(), 1e-6 * expected.norm()) << "particle " << s;
+    EXPECT_LT(elastic[s].norm(), 1e-6 * expected.norm()) << "Eq. 19 must not see the checkerboard, particle " << s;
+  }
+  EXPECT_EQ(interior, 64u);
+}
+
+TEST_F(ElasticBlock, HourglassForceIsMinusTheGradientOfItsEnergy) {
+  // E summed here from its definition, independently of the control's two-pass gather; central differences.
+  const PorousMaterial m = rubber();
+  build(m, true, true);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> jitter(-0.1 * kR, 0.1 * kR);
+  const Mat3 q = rotationAbout(Vec3(1, 0.5, 0), 0.3);
+  deform([&](const Vec3& p) { return Vec3(q * p + Vec3(jitter(rng), jitter(rng), jitter(rng))); });
+  begin();
+  Elasticity term;
+  term.prepare(*ctx_);
+  const ElasticRestState& rest = term.restState(0);
+  const auto& X = set().vec3(field::restPosition);
+  const double c = m.shearModulus();
+  const HourglassControl control = controlOf(term, set(), ctx_->kernel, c);
+  const auto energy = [&](const std::vector<Vec3>& x) {
+    double e = 0.0;
+    for (std::size_t s = 0; s < x.size(); ++s) {
+      Mat3 f = Mat3::Zero();
+      for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
+        const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
+        f += (x[t] - x[s]) * (rest.correction(s) * rest.weightedGradient(pair)).transpose();
+      }
+      for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
+        const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
+        const Vec3 offset = X[t] - X[s];
+        const double w = c * rest.volume(s) * rest.volume(t) * ctx_->kernel.w(offset.norm()) / offset.squaredNorm();
+        e += 0.5 * w * (f * offset - (x[t] - x[s])).squaredNorm();
+      }
+    }
+    return e;
+  };
+  const std::vector<Vec3> x0 = set().x();
+  const std::vector<Vec3> f = controlForces(control, x0);
+  const double h = 1e-8;
+  double largest = 0.0;
+  for (const Vec3& fs : f) largest = std::max(largest, fs.norm());
+  ASSERT_GT(largest, 0.0);
+  for (std::size_t s = 0; s < x0.size(); s += 37)
+    for (int k = 0; k < 3; ++k) {
+      std::vector<Vec3> plus = x0, minus = x0;
+      plus[s][k] += h;
+      minus[s][k] -= h;
+      const double derivative = (energy(plus) - energy(minus)) / (2 * h);
+      EXPECT_NEAR(f[s][k], -derivative, 1e-5 * largest) << "particle " << s << ", coordinate " << k;
+    }
+}
+
+TEST_F(ElasticBlock, HourglassControlIsSymmetricPositiveWithItsExactDiagonal) {
+  const PorousMaterial m = rubber();
+  build(m, true, true);
+  deform([&](const Vec3& p) { return Vec3(rotationAbout(Vec3(0, 1, 1), 0.6) * p); });
+  begin();
+  Elasticity term;
+  term.prepare(*ctx_);
+  const HourglassControl control = controlOf(term, set(), ctx_->kernel, m.shearModulus());
+  const std::size_t n = set().size();
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  std::vector<Vec3> u(n), w(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    u[i] = Vec3(value(rng), value(rng), value(rng));
+    w[i] = Vec3(value(rng), value(rng), value(rng));
+  }
+  const std::vector<Vec3> ku = controlForces(control, u), kw = controlForces(control, w); // -K u, -K w
+  double wKu = 0.0, uKw = 0.0, uKu = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    wKu -= w[i].dot(ku[i]);
+    uKw -= u[i].dot(kw[i]);
+    uKu -= u[i].dot(ku[i]);
+  }
+  EXPECT_NEAR(wKu, uKw, 1e-12 * std::abs(wKu));
+  EXPECT_GT(uKu, 0.0);
+  // Probed with a unit vector, K's column at the particle itself is K_ii e_c: the diagonal the preconditioner adds.
+  std::vector<Vec3> unit(n, Vec3::Zero());
+  for (std::size_t i = 0; i < n; i += 11)
+    for (int k = 0; k < 3; ++k) {
+      unit[i][k] = 1.0;
+      const Vec3 column = -controlForces(control, unit)[i];
+      unit[i][k] = 0.0;
+      Vec3 expected = Vec3::Zero();
+      expected[k] = control.diagonal(i);
+      ASSERT_GT(expected[k], 0.0);
+      EXPECT_LT((column - expected).norm(), 1e-12 * expected[k]) << "particle " << i << ", coordinate " << k;
+    }
+}
+
+TEST_F(TwistedBlock, HourglassControlKeepsThePreconditionerTheExactDiagonal) {
+  // Through Elasticity: the control's dt^2 K_ii joins the exact elastic blocks of a stiff body.
+  PorousMaterial m = rubber(1e9, 0.4);
+  m.hourglassControl = 4.0;
+  twist(m);
+  for (std::size_t i = 0; i < set().size(); i += 5) {
+    const Mat3 exact = diagonal(i);
+    EXPECT_LT((exact - preconditioner(i)).norm(), 1e-12 * exact.norm()) << "particle " << i;
+  }
 }
 
 } // namespace

@@ -51,6 +51,7 @@ TEST(PorousMaterial, ReadsEveryKeyInFileOrder) {
                               "  volumeSoftening: 0.5\n"
                               "  dampingViscosity: 20\n"
                               "  boundaryDampingViscosity: 200\n"
+                              "  hourglassControl: 1.5\n"
                               "clay:\n"
                               "  porosity: 0.2\n"
                               "  bulkDensity: 1600\n");
@@ -71,6 +72,7 @@ TEST(PorousMaterial, ReadsEveryKeyInFileOrder) {
   EXPECT_EQ(sand.volumeSoftening, 0.5);
   EXPECT_EQ(sand.dampingViscosity, 20.0);
   EXPECT_EQ(sand.boundaryDampingViscosity, 200.0);
+  EXPECT_EQ(sand.hourglassControl, 1.5);
   ASSERT_TRUE(sand.fixedBox.has_value());
   EXPECT_EQ(sand.fixedBox->first, Vec3(0, 0, 0));
   EXPECT_EQ(sand.fixedBox->second, Vec3(1, 0.1, 1));
@@ -82,6 +84,7 @@ TEST(PorousMaterial, ReadsEveryKeyInFileOrder) {
   EXPECT_FALSE(clay.compressible);
   EXPECT_EQ(clay.dragViscosity, 0.0);
   EXPECT_EQ(clay.poissonsRatio, 0.3);
+  EXPECT_EQ(clay.hourglassControl, 0.0) << "off unless asked for: Eq. 19 as published";
   EXPECT_FALSE(clay.fixedBox.has_value());
 }
 
@@ -154,6 +157,8 @@ INSTANTIATE_TEST_SUITE_P(
                     "constant/porosityProperties:4", "'sand.boundaryDampingViscosity'", ">= 0"},
         BadMaterial{"sand:\n  porosity: 0.4\n  solidDensity: 2650\n  shearSoftening: .inf\n",
                     "constant/porosityProperties:4", "'sand.shearSoftening'", "finite"},
+        BadMaterial{"sand:\n  porosity: 0.4\n  solidDensity: 2650\n  hourglassControl: -1\n",
+                    "constant/porosityProperties:4", "'sand.hourglassControl'", ">= 0"},
         BadMaterial{"sand:\n  porosity: 0.4\n  solidDensity: 2650\n  youngsModulus: -1\n",
                     "constant/porosityProperties:4", "'sand.youngsModulus'", ">= 0"},
         BadMaterial{"sand:\n  porosity: 0.4\n  solidDensity: 2650\n  poissonsRatio: 0.5\n",

@@ -1,0 +1,51 @@
+#pragma once
+/// Zero-energy-mode (hourglass) control of an elastic porous body, in the form of Ganzenmüller 2015 and
+/// Kugelstadt et al. 2021: the corrected deformation gradient F_s of METHOD.md §6.5.2 does not see displacements
+/// that alternate from particle to particle, so Eq. 19 lets them grow unresisted (measured in the published Seep at
+/// r = 1 cm: neighbouring columns of the block 8 mm apart in height at 8 s). The control adds the energy
+///   E = 1/2 sum_s sum_{t in N0(s)} w_st |F_s X_st - x_st|^2,   w_st = c V0_s V0_t W(X_st) / |X_st|^2,
+/// X_st = X_t - X_s, x_st = x_t - x_s, c = hourglassControl * mu [Pa]. The error vector is what s's own affine
+/// estimate misses at t: zero for every affine x (rigid motions included), because the corrected gradients
+/// reproduce linear fields exactly. F_s is linear in x, so E is quadratic and its force is exactly linear,
+/// f = -K x with K symmetric positive semi-definite: the velocity part dt^2 K u goes into the implicit
+/// system's matrix, the position part -dt K x^n onto its right-hand side, and no rotation is involved.
+/// Key: constant/porosityProperties <material>.hourglassControl (>= 0, default 0: off, Eq. 19 as published).
+
+#include "core/Types.hpp"
+#include "physics/ElasticRestState.hpp"
+
+#include <vector>
+
+namespace poro {
+
+class HourglassControl {
+public:
+  /// Takes the body's rest state for this step. `size` counts its particles with any ghosts; `stressed` lists the
+  /// particles whose sums the own particles read (Elasticity's; empty: all). stiffness = c [Pa]; 0 switches off.
+  void prepare(const ElasticRestState& rest, const std::vector<Vec3>& restX, const CubicKernel& kernel,
+               double stiffness, std::size_t size, const std::vector<Index>& stressed);
+  bool enabled() const { return stiffness_ > 0.0; }
+  /// out[k] += scale f_k(y) for the own particles k < owned, f = -dE/dy for the field y (positions or velocities).
+  void addForces(const Vec3* y, std::size_t owned, double scale, Vec3* out) const;
+  /// K_kk: the control's diagonal block of K is K_kk I (the coordinates do not couple).
+  double diagonal(std::size_t k) const;
+
+private:
+  double weight(std::size_t s, std::size_t t) const;
+  template <class F> void forEachStressed(const F& f) const;
+
+  const ElasticRestState* rest_ = nullptr;
+  const std::vector<Vec3>* restX_ = nullptr;
+  const CubicKernel* kernel_ = nullptr;
+  double stiffness_ = 0.0;
+  std::size_t size_ = 0;
+  std::vector<Index> stressed_; ///< a copy: empty (all) in a serial run
+  /// Per particle, formed by each addForces: F_s of the field and the sums H_s = sum_t w_st eps_st (x) X_st and
+  /// own_s = sum_t w_st eps_st - H_s G_s (G_s = L_s sum_t V0_t gradW0_st) that the force gathers.
+  mutable std::vector<Mat3> gradient_, moment_;
+  mutable std::vector<Vec3> own_;
+  /// M_s = sum_t w_st X_st (x) X_st at rest, for the diagonal.
+  std::vector<Mat3> restMoment_;
+};
+
+} // namespace poro
