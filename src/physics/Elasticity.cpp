@@ -88,13 +88,13 @@ void Elasticity::prepare(const StepContext& ctx) {
     Body& body = bodies_[used++];
     body.set = s;
     body.part = p;
-    rest_[s].update(ctx.particles[s], ctx.kernel);
-    prepareBody(ctx, body);
+    const bool rebuilt = rest_[s].update(ctx.particles[s], ctx.kernel);
+    prepareBody(ctx, body, rebuilt);
   }
   bodies_.resize(used);
 }
 
-void Elasticity::prepareBody(const StepContext& ctx, Body& body) {
+void Elasticity::prepareBody(const StepContext& ctx, Body& body, bool restRebuilt) {
   ParticleSet& set = ctx.particles[body.set];
   const PorousMaterial& material = *ctx.materials[body.set];
   const ElasticRestState& rest = rest_[body.set];
@@ -127,10 +127,11 @@ void Elasticity::prepareBody(const StepContext& ctx, Body& body) {
           break;
         }
   }
-  body.hourglass.prepare(rest, restX, ctx.kernel, material.hourglassControl * mu, n, body.stressed);
+  body.hourglass.prepare(rest, restX, material.hourglassControl * mu, n, body.stressed, restRebuilt);
   body.forEachStressed(n, [&](std::size_t s) {
     // Rotation first (METHOD.md §6.5.2).
     const Mat3 f = deformationGradient(rest, x, s);
+    if (body.hourglass.enabled()) body.hourglass.setGradient(s, f);
     rotation[s] = extractRotation(f, rotation[s]);
     const Mat3 rl = rotation[s] * rest.correction(s);
     const Mat3 strain = positionStrain(rest, x, restX, s, f, rotation[s]);
@@ -190,6 +191,7 @@ void Elasticity::addApply(const linalg::BlockVector& u, const linalg::BlockVecto
       }
       const Mat3 rl = rotation[s] * rest.correction(s);
       const Mat3 eps = symmetric(dt * gradient * rl.transpose());
+      if (body.hourglass.enabled()) body.hourglass.setGradient(s, gradient * rest.correction(s).transpose());
       body.stress[s] = rest.volume(s) * (stressOf(eps, body.shear(s), body.volumetric(s)) * rl);
     });
     parallel::forEach(n, [&](std::size_t s) { out[s] -= dt * force(body, body.stress, s); });

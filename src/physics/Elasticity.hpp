@@ -62,7 +62,8 @@ private:
     template <class F> void forEachStressed(std::size_t n, const F& f) const;
     HourglassControl hourglass; ///< off unless the material sets hourglassControl
   };
-  void prepareBody(const StepContext& ctx, Body& body);
+  /// restRebuilt: the rest state was built anew for this step (a reorder, a removal, the first step).
+  void prepareBody(const StepContext& ctx, Body& body, bool restRebuilt);
   /// F_s = V0_s sum_t V0_t (M_s + M_t) gradW(X_s - X_t) for a per-particle field M = P R L, given the volume-weighted
   /// field V0 M: the neighbours' volumes ride with their stresses instead of being read per pair.
   Vec3 force(const Body& body, const std::vector<Mat3>& weighted, std::size_t s) const;

@@ -2,8 +2,6 @@
 
 #include "core/Parallel.hpp"
 
-#include <cmath>
-
 namespace poro {
 
 // With eps_st = F_s X_st - x_st and F_s = sum_t V0_t x_st (x) g_st, g_st = L_s gradW(X_s - X_t), eps_st is a
@@ -17,17 +15,11 @@ template <class F> void HourglassControl::forEachStressed(const F& f) const {
     parallel::forEach(stressed_.size(), [&](std::size_t k) { f(static_cast<std::size_t>(stressed_[k])); });
 }
 
-double HourglassControl::weight(std::size_t s, std::size_t t) const {
-  const Vec3 offset = (*restX_)[t] - (*restX_)[s];
-  const double d2 = offset.squaredNorm();
-  return stiffness_ * rest_->volume(s) * rest_->volume(t) * kernel_->w(std::sqrt(d2)) / d2;
-}
-
-void HourglassControl::prepare(const ElasticRestState& rest, const std::vector<Vec3>& restX, const CubicKernel& kernel,
-                               double stiffness, std::size_t size, const std::vector<Index>& stressed) {
+void HourglassControl::prepare(const ElasticRestState& rest, const std::vector<Vec3>& restX, double stiffness,
+                               std::size_t size, const std::vector<Index>& stressed, bool restRebuilt) {
+  const bool changed = restRebuilt || stiffness != stiffness_ || size != diagonal_.size();
   rest_ = &rest;
   restX_ = &restX;
-  kernel_ = &kernel;
   stiffness_ = stiffness;
   size_ = size;
   stressed_ = stressed;
@@ -35,21 +27,56 @@ void HourglassControl::prepare(const ElasticRestState& rest, const std::vector<V
     std::vector<Mat3>().swap(gradient_);
     std::vector<Mat3>().swap(moment_);
     std::vector<Vec3>().swap(own_);
-    std::vector<Mat3>().swap(restMoment_);
+    std::vector<double>().swap(diagonal_);
     return;
   }
   gradient_.resize(size);
   moment_.resize(size);
   own_.resize(size);
-  restMoment_.resize(size);
+  if (changed) formDiagonal();
+}
+
+void HourglassControl::formDiagonal() {
+  // d eps_st / d x_k = [k = s] (1 - G_s . X_st) + [k in N0(s)] V0_k g_sk . X_st - [k = t]:
+  // K_kk = sum_t w_kt (1 - G_k . X_kt)^2 + sum_{s in N0(k)} (V0_k^2 g_sk.M_s g_sk - 2 w_sk V0_k g_sk . X_sk + w_sk),
+  // M_s = sum_t w_st X_st (x) X_st (held in moment_ meanwhile, which addForces refills).
+  const ElasticRestState& rest = *rest_;
+  const auto& restX = *restX_;
   forEachStressed([&](std::size_t s) {
     Mat3 m = Mat3::Zero();
     for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
       const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
       const Vec3 offset = restX[t] - restX[s];
-      addOuter(m, weight(s, t) * offset, offset);
+      addOuter(m, weight(s, t, pair, offset) * offset, offset);
     }
-    restMoment_[s] = m;
+    moment_[s] = m;
+  });
+  diagonal_.assign(size_, 0.0);
+  forEachStressed([&](std::size_t k) {
+    const Vec3 g = rest.correction(k) * rest.gradientSum(k);
+    const double v0 = rest.volume(k);
+    double sum = 0.0;
+    for (std::size_t pair = rest.begin(k); pair < rest.end(k); ++pair) {
+      const std::size_t s = static_cast<std::size_t>(rest.neighbour(pair));
+      const Vec3 offset = restX[s] - restX[k]; // X_ks = -X_sk
+      const double w = weight(k, s, pair, offset);
+      const double own = 1.0 - g.dot(offset);
+      const Vec3 gsk = -(rest.correction(s) * rest.gradient(pair));
+      sum += w * own * own + v0 * v0 * gsk.dot(moment_[s] * gsk) + 2.0 * w * v0 * gsk.dot(offset) + w;
+    }
+    diagonal_[k] = sum;
+  });
+}
+
+void HourglassControl::formGradients(const Vec3* y) const {
+  const ElasticRestState& rest = *rest_;
+  forEachStressed([&](std::size_t s) {
+    Mat3 f = Mat3::Zero();
+    for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
+      const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
+      addOuter(f, y[t] - y[s], rest.weightedGradient(pair));
+    }
+    gradient_[s] = f * rest.correction(s).transpose(); // sum (y_t - y_s) (x) L gradW0 = [sum ...] L^T
   });
 }
 
@@ -57,55 +84,30 @@ void HourglassControl::addForces(const Vec3* y, std::size_t owned, double scale,
   const ElasticRestState& rest = *rest_;
   const auto& restX = *restX_;
   forEachStressed([&](std::size_t s) {
-    const Mat3& l = rest.correction(s);
-    Mat3 f = Mat3::Zero();
-    for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
-      const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
-      addOuter(f, y[t] - y[s], rest.weightedGradient(pair));
-    }
-    f *= l.transpose(); // sum (y_t - y_s) (x) L gradW0 = [sum (y_t - y_s) (x) gradW0] L^T
+    const Mat3& f = gradient_[s];
     Mat3 h = Mat3::Zero();
     Vec3 e = Vec3::Zero();
     for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
       const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
       const Vec3 offset = restX[t] - restX[s];
-      const Vec3 eps = weight(s, t) * (f * offset - (y[t] - y[s]));
+      const Vec3 eps = weight(s, t, pair, offset) * (f * offset - (y[t] - y[s]));
       addOuter(h, eps, offset);
       e += eps;
     }
-    gradient_[s] = f;
-    moment_[s] = h;
-    own_[s] = e - h * (l * rest.gradientSum(s));
+    moment_[s] = h * rest.correction(s);
+    own_[s] = e - moment_[s] * rest.gradientSum(s);
   });
   parallel::forEach(owned, [&](std::size_t k) {
     Vec3 derivative = own_[k];
     for (std::size_t pair = rest.begin(k); pair < rest.end(k); ++pair) {
       const std::size_t s = static_cast<std::size_t>(rest.neighbour(pair));
-      const Vec3 gsk = -(rest.correction(s) * rest.gradient(pair)); // L_s gradW(X_s - X_k)
-      const Vec3 eps = gradient_[s] * (restX[k] - restX[s]) - (y[k] - y[s]);
-      derivative += rest.volume(k) * (moment_[s] * gsk) - weight(s, k) * eps;
+      const Vec3 offset = restX[k] - restX[s]; // X_sk
+      const Vec3 eps = gradient_[s] * offset - (y[k] - y[s]);
+      // H_s g_sk = H_s L_s gradW(X_s - X_k), and the stored gradient of k's pair is gradW(X_k - X_s).
+      derivative -= rest.volume(k) * (moment_[s] * rest.gradient(pair)) + weight(k, s, pair, -offset) * eps;
     }
     out[k] -= scale * derivative;
   });
-}
-
-double HourglassControl::diagonal(std::size_t k) const {
-  // d eps_st / d x_k = [k = s] (1 - G_s . X_st) + [k in N0(s)] V0_k g_sk . X_st - [k = t]:
-  // K_kk = sum_t w_kt (1 - G_k . X_kt)^2 + sum_{s in N0(k)} (V0_k^2 g_sk.M_s g_sk - 2 w_sk V0_k g_sk . X_sk + w_sk).
-  const ElasticRestState& rest = *rest_;
-  const auto& restX = *restX_;
-  const Vec3 g = rest.correction(k) * rest.gradientSum(k);
-  const double v0 = rest.volume(k);
-  double sum = 0.0;
-  for (std::size_t pair = rest.begin(k); pair < rest.end(k); ++pair) {
-    const std::size_t s = static_cast<std::size_t>(rest.neighbour(pair));
-    const Vec3 offset = restX[s] - restX[k]; // X_ks = -X_sk
-    const double w = weight(k, s);
-    const double own = 1.0 - g.dot(offset);
-    const Vec3 gsk = -(rest.correction(s) * rest.gradient(pair));
-    sum += w * own * own + v0 * v0 * gsk.dot(restMoment_[s] * gsk) + 2.0 * w * v0 * gsk.dot(offset) + w;
-  }
-  return sum;
 }
 
 } // namespace poro
