@@ -37,9 +37,13 @@ public:
   }
   /// gradW(X_s - X_t) per pair, without the volume: for sums that fold V0_t into a per-particle factor.
   Vec3 gradient(std::size_t pair) const {
-    const PairGradient& g = gradientTable_[gradientCodes_.empty() ? pair : gradientCodes_[pair]];
+    const PairGradient& g = gradientTable_[gradientIndex(pair)];
     return Vec3(g.x, g.y, g.z);
   }
+  /// Where pair's rest gradient sits among the stored ones (its code, or the pair itself when each keeps its own), and
+  /// how many are stored: a term can keep its own per-gradient rest values beside them.
+  std::size_t gradientIndex(std::size_t pair) const { return gradientCodes_.empty() ? pair : gradientCodes_[pair]; }
+  std::size_t storedGradients() const { return gradientTable_.size(); }
   /// How many distinct rest gradients the pairs share (a lattice-sampled body: a few dozen), or 0 where there
   /// were too many to share and every pair keeps its own.
   std::size_t sharedGradients() const { return gradientCodes_.empty() ? 0 : gradientTable_.size(); }

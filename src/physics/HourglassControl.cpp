@@ -28,6 +28,7 @@ void HourglassControl::prepare(const ElasticRestState& rest, const std::vector<V
     std::vector<Mat3>().swap(moment_);
     std::vector<Vec3>().swap(own_);
     std::vector<double>().swap(diagonal_);
+    std::vector<double>().swap(laplacianWeight_);
     return;
   }
   gradient_.resize(size);
@@ -42,12 +43,20 @@ void HourglassControl::formDiagonal() {
   // M_s = sum_t w_st X_st (x) X_st (held in moment_ meanwhile, which addForces refills).
   const ElasticRestState& rest = *rest_;
   const auto& restX = *restX_;
+  // k = gradW(X_s - X_t) . X_st / |X_st|^2 = -W'(r)/r from the rounded gradient. Pairs sharing a gradient share their
+  // offset up to round-off in the positions; the last pair's value is kept (serially: the same on any thread count).
+  laplacianWeight_.assign(rest.storedGradients(), 0.0);
+  for (std::size_t s = 0; s < size_; ++s)
+    for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
+      const Vec3 offset = restX[static_cast<std::size_t>(rest.neighbour(pair))] - restX[s];
+      laplacianWeight_[rest.gradientIndex(pair)] = rest.gradient(pair).dot(offset) / offset.squaredNorm();
+    }
   forEachStressed([&](std::size_t s) {
     Mat3 m = Mat3::Zero();
     for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
       const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
       const Vec3 offset = restX[t] - restX[s];
-      addOuter(m, weight(s, t, pair, offset) * offset, offset);
+      addOuter(m, weight(s, t, pair) * offset, offset);
     }
     moment_[s] = m;
   });
@@ -59,7 +68,7 @@ void HourglassControl::formDiagonal() {
     for (std::size_t pair = rest.begin(k); pair < rest.end(k); ++pair) {
       const std::size_t s = static_cast<std::size_t>(rest.neighbour(pair));
       const Vec3 offset = restX[s] - restX[k]; // X_ks = -X_sk
-      const double w = weight(k, s, pair, offset);
+      const double w = weight(k, s, pair);
       const double own = 1.0 - g.dot(offset);
       const Vec3 gsk = -(rest.correction(s) * rest.gradient(pair));
       sum += w * own * own + v0 * v0 * gsk.dot(moment_[s] * gsk) + 2.0 * w * v0 * gsk.dot(offset) + w;
@@ -90,7 +99,7 @@ void HourglassControl::addForces(const Vec3* y, std::size_t owned, double scale,
     for (std::size_t pair = rest.begin(s); pair < rest.end(s); ++pair) {
       const std::size_t t = static_cast<std::size_t>(rest.neighbour(pair));
       const Vec3 offset = restX[t] - restX[s];
-      const Vec3 eps = weight(s, t, pair, offset) * (f * offset - (y[t] - y[s]));
+      const Vec3 eps = weight(s, t, pair) * (f * offset - (y[t] - y[s]));
       addOuter(h, eps, offset);
       e += eps;
     }
@@ -104,7 +113,7 @@ void HourglassControl::addForces(const Vec3* y, std::size_t owned, double scale,
       const Vec3 offset = restX[k] - restX[s]; // X_sk
       const Vec3 eps = gradient_[s] * offset - (y[k] - y[s]);
       // H_s g_sk = H_s L_s gradW(X_s - X_k), and the stored gradient of k's pair is gradW(X_k - X_s).
-      derivative -= rest.volume(k) * (moment_[s] * rest.gradient(pair)) + weight(k, s, pair, -offset) * eps;
+      derivative -= rest.volume(k) * (moment_[s] * rest.gradient(pair)) + weight(k, s, pair) * eps;
     }
     out[k] -= scale * derivative;
   });

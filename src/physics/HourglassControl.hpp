@@ -38,9 +38,9 @@ public:
   double diagonal(std::size_t k) const { return diagonal_[k]; }
 
 private:
-  /// w_st for the rest pair `pair` of s with offset X_st.
-  double weight(std::size_t s, std::size_t t, std::size_t pair, const Vec3& offset) const {
-    return stiffness_ * rest_->volume(s) * rest_->volume(t) * rest_->gradient(pair).dot(offset) / offset.squaredNorm();
+  /// w_st = c V0_s V0_t k_st for the rest pair `pair` of s (and t).
+  double weight(std::size_t s, std::size_t t, std::size_t pair) const {
+    return stiffness_ * rest_->volume(s) * rest_->volume(t) * laplacianWeight_[rest_->gradientIndex(pair)];
   }
   template <class F> void forEachStressed(const F& f) const;
   void formDiagonal();
@@ -55,6 +55,9 @@ private:
   mutable std::vector<Mat3> gradient_, moment_;
   mutable std::vector<Vec3> own_;
   std::vector<double> diagonal_;
+  /// k_st by stored rest gradient (ElasticRestState::gradientIndex): a lattice body's pairs share a few dozen, so
+  /// the passes read them instead of dividing by |X_st|^2 per pair (the division led a profile of the passes).
+  std::vector<double> laplacianWeight_;
 };
 
 } // namespace poro
