@@ -272,8 +272,11 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
   const double dt2 = ctx.dt * ctx.dt;
   const double omega = settings_.relaxation;
   const double tolerance = settings_.maxDensityError / 100.0;
-  const double particleBound = settings_.maxParticleDensityError > 0.0 ? settings_.maxParticleDensityError / 100.0
-                                                                       : std::numeric_limits<double>::infinity();
+  const auto bound = [](double percent) {
+    return percent > 0.0 ? percent / 100.0 : std::numeric_limits<double>::infinity();
+  };
+  const double particleBound = bound(settings_.maxParticleDensityError);
+  const double skeletonBound = bound(settings_.maxSkeletonParticleDensityError);
   PressureStats stats;
   std::vector<double> active; // by position in `sets`: fixed flags do not change within a solve
   for (std::size_t a : sets) active.push_back(activeParticles(ctx, a));
@@ -282,7 +285,7 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
     if (settings_.chebyshev) weight = chebyshevWeight(it, settings_.spectralRadius, weight);
     computeAccelerations(ctx, sets);
     // Residuals use a^p of the sweep's start only, so updating pi set by set is pure Jacobi across sets.
-    double worstMean = 0.0, worstMax = 0.0;
+    double worstMean = 0.0, worstMax = 0.0, worstSkeleton = 0.0;
     for (std::size_t k = 0; k < sets.size(); ++k) {
       const std::size_t a = sets[k];
       ParticleSet& set = ctx.particles[a];
@@ -338,13 +341,16 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
       });
       const double mean = active[k] > 0 ? ctx.sumOverRanks(residuals.sum) / active[k] : 0.0;
       worstMean = std::max(worstMean, mean);
-      worstMax = std::max(worstMax, ctx.maxOverRanks(residuals.max));
+      const double largest = ctx.maxOverRanks(residuals.max);
+      worstMax = std::max(worstMax, largest);
+      if (ctx.materials[a]) worstSkeleton = std::max(worstSkeleton, largest);
     }
     ctx.refreshGhosts({field::pi, field::contactPressure});
     stats.iterations = it;
     stats.meanError = 100.0 * worstMean;
     stats.maxError = 100.0 * worstMax;
-    if (it >= settings_.minIterations && worstMean <= tolerance && worstMax <= particleBound) {
+    if (it >= settings_.minIterations && worstMean <= tolerance && worstMax <= particleBound &&
+        worstSkeleton <= skeletonBound) {
       stats.converged = true;
       break;
     }

@@ -63,6 +63,8 @@ SolverSettings SolverSettings::read(const Dictionary& dict) {
     ps.maxDensityError = p->getReal("maxDensityError", ps.maxDensityError, Range::positive());
     ps.maxParticleDensityError =
         p->getReal("maxParticleDensityError", ps.maxParticleDensityError, Range::nonNegative());
+    ps.maxSkeletonParticleDensityError =
+        p->getReal("maxSkeletonParticleDensityError", ps.maxSkeletonParticleDensityError, Range::nonNegative());
     ps.minIterations = static_cast<int>(p->getInt("minIterations", ps.minIterations, Range::closed(1, 1e6)));
     ps.maxIterations = static_cast<int>(p->getInt("maxIterations", ps.maxIterations, Range::closed(1, 1e6)));
     if (ps.minIterations > ps.maxIterations)

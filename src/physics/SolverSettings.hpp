@@ -15,6 +15,10 @@ struct PressureSettings {
   /// published). With the mean alone a few compressed particles can wait until the rest of the set's error has
   /// drifted up to the tolerance, and then be released at once (bench/README.md, 2026-12-01).
   double maxParticleDensityError = 0.0;
+  /// The same bound for the particles of porous skeletons alone [% of rho^max]; 0: none. A skeleton held by the
+  /// mean alone can creep into compression in alternate layers until one step releases it, and the gap water beside
+  /// it is thrown (bench/README.md, 2026-12-02).
+  double maxSkeletonParticleDensityError = 0.0;
   int minIterations = 2;
   int maxIterations = 100;
   double relaxation = 0.5; ///< Jacobi relaxation omega, (0, 1]

@@ -181,6 +181,20 @@ TEST(PressureParticleBound, OffByDefaultInTheStructAndTheFileAndReadInPercent) {
   EXPECT_NE(negative.find("maxParticleDensityError"), std::string::npos) << negative;
 }
 
+TEST(PressureSkeletonBound, OffByDefaultInTheStructAndTheFileAndReadInPercent) {
+  EXPECT_EQ(pressure("threads: 0\n").maxSkeletonParticleDensityError, 0.0);
+  const SolverSettings file =
+      SolverSettings::read(Dictionary::read(std::string(POROSPH_TEST_DATA) + "/../../etc/caseDicts/solverDict"));
+  EXPECT_EQ(file.pressure.maxSkeletonParticleDensityError, SolverSettings{}.pressure.maxSkeletonParticleDensityError);
+  const PressureSettings both = pressure("compatibility: {preset: paper}\npressure: {maxSkeletonParticleDensityError: "
+                                         "0.1}\n");
+  EXPECT_EQ(both.maxSkeletonParticleDensityError, 0.1);
+  EXPECT_EQ(both.maxParticleDensityError, 0.0); // the bound on everyone stays off
+  const std::string negative = errorOf("threads: 0\npressure: {maxSkeletonParticleDensityError: -0.1}\n");
+  EXPECT_NE(negative.find("system/solverDict:2"), std::string::npos) << negative;
+  EXPECT_NE(negative.find("maxSkeletonParticleDensityError"), std::string::npos) << negative;
+}
+
 double xsph(const std::string& text) { return SolverSettings::read(Dictionary::parse(text, "system/solverDict")).xsph; }
 
 TEST(Xsph, OffByDefaultAndTheKeyWinsOverAnyPreset) {
