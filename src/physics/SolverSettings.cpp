@@ -48,12 +48,15 @@ CompatibilitySettings CompatibilitySettings::reference() {
 
 SolverSettings SolverSettings::read(const Dictionary& dict) {
   SolverSettings s;
-  // Compatibility first: naming a preset, paper or reference, asks for Eq. 4 and 13 as published, so it turns the
-  // defaults of pressure.poreFluidDensity and implicit.adhesionInFullPores back to paper (METHOD.md §3.3,
-  // §6.5.6); the keys themselves still win.
+  // Compatibility first: naming a preset, paper or reference, asks for Eq. 4 and 13 and the stopping rule as
+  // published, so it turns the defaults of pressure.poreFluidDensity and implicit.adhesionInFullPores back to paper
+  // (METHOD.md §3.3, §6.5.6) and the skeleton's single-particle bound off (§6.7); the keys themselves still win.
   if (auto c = dict.optionalSubDict("compatibility")) {
     s.compatibility = readCompatibility(*c);
-    if (c->has("preset")) s.pressure.latticeCorrectedPoreFluid = s.implicit.adhesionFadesInFullPores = false;
+    if (c->has("preset")) {
+      s.pressure.latticeCorrectedPoreFluid = s.implicit.adhesionFadesInFullPores = false;
+      s.pressure.maxSkeletonParticleDensityError = 0.0;
+    }
     // The reference preset is the authors' iteration sweep for sweep (METHOD.md §10).
     if (c->has("preset") && c->getWord("preset", {"paper", "reference"}, "paper") == "reference")
       s.pressure.chebyshev = false;
