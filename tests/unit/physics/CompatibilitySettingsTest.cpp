@@ -188,9 +188,9 @@ TEST(PressureSkeletonBound, OnByDefaultOffUnderEitherPresetAndTheKeyWinsInPercen
   EXPECT_EQ(file.pressure.maxSkeletonParticleDensityError, SolverSettings{}.pressure.maxSkeletonParticleDensityError);
   // A preset asks for the published stopping rule, the mean alone (METHOD.md §6.7), in either order of the blocks.
   EXPECT_EQ(pressure("compatibility: {preset: paper}\n").maxSkeletonParticleDensityError, 0.0);
-  EXPECT_EQ(pressure("pressure: {maxIterations: 50}\ncompatibility: {preset: reference}\n")
-                .maxSkeletonParticleDensityError,
-            0.0);
+  EXPECT_EQ(
+      pressure("pressure: {maxIterations: 50}\ncompatibility: {preset: reference}\n").maxSkeletonParticleDensityError,
+      0.0);
   EXPECT_EQ(pressure("compatibility: {volumetricStress: unitLambda}\n").maxSkeletonParticleDensityError, 0.2);
   const PressureSettings both = pressure("compatibility: {preset: paper}\npressure: {maxSkeletonParticleDensityError: "
                                          "0.1}\n");
