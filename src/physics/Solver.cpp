@@ -383,7 +383,7 @@ void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
   auto& fixed = set.addInt(field::fixed, Restart);
   auto& rest = set.addVec3(field::restPosition, Restart);
   if (material.youngsModulus > 0.0) Elasticity::registerFields(set);
-  if (material.compressible) registerWallContactFields(set);
+  if (material.compressible || settings_.pressure.wallContactAllSkeletons) registerWallContactFields(set);
   if (poreFill_ && material.capillaryStrength > 0.0) PoreFill::registerFields(set, material);
   // The rest state is the sampled one: X = x at step 0, read back from the time directory afterwards.
   if (state_.step == 0) rest = set.x();

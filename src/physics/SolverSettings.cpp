@@ -50,12 +50,14 @@ SolverSettings SolverSettings::read(const Dictionary& dict) {
   SolverSettings s;
   // Compatibility first: naming a preset, paper or reference, asks for Eq. 4 and 13 and the stopping rule as
   // published, so it turns the defaults of pressure.poreFluidDensity and implicit.adhesionInFullPores back to paper
-  // (METHOD.md §3.3, §6.5.6) and the skeleton's single-particle bound off (§6.7); the keys themselves still win.
+  // (METHOD.md §3.3, §6.5.6), the skeleton's single-particle bound off (§6.7) and the wall contact back to the
+  // compressible skeletons it was made for; the keys themselves still win.
   if (auto c = dict.optionalSubDict("compatibility")) {
     s.compatibility = readCompatibility(*c);
     if (c->has("preset")) {
       s.pressure.latticeCorrectedPoreFluid = s.implicit.adhesionFadesInFullPores = false;
       s.pressure.maxSkeletonParticleDensityError = 0.0;
+      s.pressure.wallContactAllSkeletons = false;
     }
     // The reference preset is the authors' iteration sweep for sweep (METHOD.md §10).
     if (c->has("preset") && c->getWord("preset", {"paper", "reference"}, "paper") == "reference")
@@ -79,6 +81,8 @@ SolverSettings SolverSettings::read(const Dictionary& dict) {
     ps.spectralRadius = p->getReal("spectralRadius", ps.spectralRadius, Range::open(0.0, 1.0));
     ps.latticeCorrectedPoreFluid =
         readSwitch(*p, "poreFluidDensity", "paper", "latticeCorrected", ps.latticeCorrectedPoreFluid);
+    ps.wallContactAllSkeletons =
+        readSwitch(*p, "wallContact", "compressibleSkeletons", "allSkeletons", ps.wallContactAllSkeletons);
     p->checkUnknownKeys();
   }
   if (auto i = dict.optionalSubDict("implicit")) {

@@ -31,6 +31,12 @@ struct PressureSettings {
   /// poreFluidDensity: paper (false, Eq. 4 as it stands) | latticeCorrected (true, PoreFluidDensityBias.hpp).
   /// Default latticeCorrected, so pores hold phi V; paper when system/solverDict names a compatibility preset.
   bool latticeCorrectedPoreFluid = true;
+  /// wallContact: allSkeletons (true) | compressibleSkeletons (false): which porous skeletons get the contact
+  /// constraint of WallContact.hpp. An incompressible skeleton otherwise meets a wall through its density alone, and
+  /// a particle short of neighbours (a ball's underside) sinks into the floor: 0.54 r for a ball of radius 4r
+  /// (WallContactTest). Default allSkeletons; compressibleSkeletons when system/solverDict names a compatibility
+  /// preset. The key, when given, always wins.
+  bool wallContactAllSkeletons = true;
 };
 
 struct ImplicitSettings {

@@ -1,13 +1,15 @@
 #pragma once
-/// Wall contact of compressible porous solids. The density constraint of a compressible skeleton (rho~ <= 1,
+/// Wall contact of porous solids. The density constraint of a compressible skeleton (rho~ <= 1,
 /// METHOD.md §3.3) counts a wall like closed pores, so it pushes back only once the pores next to the wall are
 /// shut: a squeezed sponge sank about r into the floor. A second unilateral constraint per particle keeps the
 /// walls' share of its kernel, D_a = sum_k V_k W_ak, at most what a flat wall gives a particle resting on it
 /// (its centre r in front of the wall surface, like a fluid lattice continuing into the wall):
 ///   D*_a = D_a + dt sum_k V_k (v*_a - v_k).gradW_ak <= D^max_a,
 /// enforced by a contact pressure kappa_a >= 0 in the pressure solve with the force -kappa_a sum_k V_k gradW_ak,
-/// the shape of the wall part of the pressure force (so rigid bodies feel its reaction the same way). Fluid and
-/// incompressible solids are untouched: their density constraint already holds them at that distance.
+/// the shape of the wall part of the pressure force (so rigid bodies feel its reaction the same way). Fluid is
+/// untouched: its density constraint holds it at that distance. Incompressible skeletons take part too unless
+/// pressure.wallContact is compressibleSkeletons (either compatibility preset): their density holds a full lattice
+/// there, but a particle short of neighbours (a ball's underside) sank half a radius into the floor.
 /// D^max_a is the flat-wall share, or the particle's share at step 0 where it starts closer (in a corner).
 
 #include "physics/StepContext.hpp"
@@ -15,7 +17,7 @@
 
 namespace poro {
 
-/// Registers kappa and D^max (restart) and the scratch fields on a compressible porous set. D^max starts
+/// Registers kappa and D^max (restart) and the scratch fields on a porous set. D^max starts
 /// negative (unset) on a set that does not hold it yet; initialiseWallContactLimits sets it.
 void registerWallContactFields(ParticleSet& set);
 

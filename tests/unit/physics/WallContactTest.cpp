@@ -1,8 +1,10 @@
-// Wall contact of compressible porous solids (physics/WallContact.hpp): the flat-wall share, and a squeezed
-// skeleton that stays out of the floor and the plate while the walls carry its load.
+// Wall contact of porous solids (physics/WallContact.hpp): the flat-wall share, a squeezed skeleton that stays out
+// of the floor and the plate while the walls carry its load, and incompressible bodies resting on the floor.
 
 #include "physics/WallContact.hpp"
 #include "PorousTestSystems.hpp"
+#include "core/Dictionary.hpp"
+#include "core/Error.hpp"
 #include "physics/RigidBodyForces.hpp"
 #include "sph/BoundaryVolume.hpp"
 
@@ -108,6 +110,60 @@ TEST(WallContact, FloorCarriesTheRestingBlocksWeight) {
   double lowest = 1.0;
   for (const Vec3& x : block.x()) lowest = std::min(lowest, x.y());
   EXPECT_GE(lowest, kR - 0.1 * kR);
+}
+
+/// The lowest centre of an incompressible skeleton settling for 0.4 s on the squeeze scene's floor (surface y = 0).
+double lowestOfSettlingIncompressibleBody(std::vector<Vec3> positions, const SolverSettings& settings) {
+  ParticleSystem ps(kR);
+  addSet(ps, "stone", SetKind::Porous, std::move(positions), kBlock);
+  addSet(ps, "walls", SetKind::Boundary, sampleBox(Vec3(-0.1, -0.04, -0.1), Vec3(0.22, 0.0, 0.22), kR), kFloor);
+  PorousMaterial stone = material("stone", 0.6, 5000.0, false); // the published Seep's block: bulk 2000 kg/m^3
+  stone.youngsModulus = 2.5e5;
+  stone.poissonsRatio = 0.3;
+  stone.dampingViscosity = 5.0;
+  Solver solver(std::move(ps), FluidProperties{}, {stone}, settings, fixedStep(1e-3), RunState{});
+  double lowest = 1.0;
+  for (int n = 0; n < 400; ++n) {
+    solver.step(1e-3);
+    for (const Vec3& x : solver.particles()[0].x()) lowest = std::min(lowest, x.y());
+  }
+  return lowest;
+}
+
+std::vector<Vec3> ballOnFloor() { // radius 4r, its lowest lattice particles r above the floor
+  std::vector<Vec3> ball;
+  for (const Vec3& x : sampleBox(Vec3(0.0, 0.0, 0.0), Vec3(0.16, 0.16, 0.16), kR))
+    if ((x - Vec3(0.08, 0.08, 0.08)).norm() <= 0.08 - 0.5 * kR) ball.push_back(x);
+  return ball;
+}
+
+TEST(WallContact, IncompressibleBodiesRestOnTheFloorNotInIt) {
+  // A box's floor layer is held by its full lattice's density, but the underside of a ball has few neighbours and
+  // density alone let it sink into the floor: 0.54 r (pressure.wallContact compressibleSkeletons, as under either
+  // preset). With the contact constraint: 0.006 r.
+  const double box =
+      lowestOfSettlingIncompressibleBody(sampleBox(Vec3::Zero(), Vec3(0.12, 0.08, 0.12), kR), SolverSettings{});
+  EXPECT_GE(box, kR - 0.1 * kR);
+  EXPECT_GE(lowestOfSettlingIncompressibleBody(ballOnFloor(), SolverSettings{}), kR - 0.1 * kR);
+}
+
+TEST(WallContact, EitherPresetLeavesIncompressibleSkeletonsToTheirDensity) {
+  const auto contact = [](const std::string& text, bool compressible) {
+    ParticleSystem ps(kR);
+    addSet(ps, "stone", SetKind::Porous, sampleBox(Vec3::Zero(), Vec3(0.04, 0.04, 0.04), kR), kBlock);
+    addSet(ps, "walls", SetKind::Boundary, sampleBox(Vec3(-0.04, -0.04, -0.04), Vec3(0.08, 0.0, 0.08), kR), kFloor);
+    const SolverSettings settings = SolverSettings::read(Dictionary::parse(text, "system/solverDict"));
+    const Solver solver(std::move(ps), FluidProperties{}, {material("stone", 0.6, 5000.0, compressible)}, settings,
+                        fixedStep(1e-3), RunState{});
+    return hasWallContact(solver.particles()[0]);
+  };
+  EXPECT_TRUE(contact("threads: 0\n", false));
+  EXPECT_FALSE(contact("compatibility: {preset: paper}\n", false));
+  EXPECT_FALSE(contact("compatibility: {preset: reference}\n", false));
+  EXPECT_TRUE(contact("compatibility: {preset: paper}\npressure: {wallContact: allSkeletons}\n", false));
+  EXPECT_FALSE(contact("pressure: {wallContact: compressibleSkeletons}\n", false));
+  EXPECT_TRUE(contact("compatibility: {preset: reference}\n", true)); // compressible skeletons always
+  EXPECT_THROW(contact("pressure: {wallContact: all}\n", false), InputError);
 }
 
 } // namespace
