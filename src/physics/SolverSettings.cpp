@@ -58,10 +58,9 @@ SolverSettings SolverSettings::read(const Dictionary& dict) {
       s.pressure.latticeCorrectedPoreFluid = s.implicit.adhesionFadesInFullPores = false;
       s.pressure.maxSkeletonParticleDensityError = 0.0;
       s.pressure.wallContactAllSkeletons = false;
+      // The reference preset is the authors' iteration sweep for sweep (METHOD.md §10).
+      if (c->getWord("preset", {"paper", "reference"}, "paper") == "reference") s.pressure.chebyshev = false;
     }
-    // The reference preset is the authors' iteration sweep for sweep (METHOD.md §10).
-    if (c->has("preset") && c->getWord("preset", {"paper", "reference"}, "paper") == "reference")
-      s.pressure.chebyshev = false;
   }
   if (auto p = dict.optionalSubDict("pressure")) {
     auto& ps = s.pressure;

@@ -18,12 +18,16 @@ namespace {
 
 constexpr long long kBlock = 0, kFloor = 1, kPlate = 2;
 
-/// A sponge-like block 12 x 8 x 12 cm (6 x 4 x 6 particles) on a floor whose surface is y = 0, a plate 1 cm above.
+/// Two wall layers whose surface is y = 0, wide enough for the bodies below.
+ParticleSet& addFloor(ParticleSystem& ps) {
+  return addSet(ps, "walls", SetKind::Boundary, sampleBox(Vec3(-0.1, -0.04, -0.1), Vec3(0.22, 0.0, 0.22), kR), kFloor);
+}
+
+/// A sponge-like block 12 x 8 x 12 cm (6 x 4 x 6 particles) on the floor, a plate 1 cm above.
 ParticleSystem squeezeScene() {
   ParticleSystem ps(kR);
   addSet(ps, "foam", SetKind::Porous, sampleBox(Vec3(0.0, 0.0, 0.0), Vec3(0.12, 0.08, 0.12), kR), kBlock);
-  ParticleSet& walls =
-      addSet(ps, "walls", SetKind::Boundary, sampleBox(Vec3(-0.1, -0.04, -0.1), Vec3(0.22, 0.0, 0.22), kR), kFloor);
+  ParticleSet& walls = addFloor(ps);
   appendObject(walls, sampleBox(Vec3(-0.1, 0.09, -0.1), Vec3(0.22, 0.13, 0.22), kR), kPlate);
   return ps;
 }
@@ -112,16 +116,16 @@ TEST(WallContact, FloorCarriesTheRestingBlocksWeight) {
   EXPECT_GE(lowest, kR - 0.1 * kR);
 }
 
-/// The lowest centre of an incompressible skeleton settling for 0.4 s on the squeeze scene's floor (surface y = 0).
-double lowestOfSettlingIncompressibleBody(std::vector<Vec3> positions, const SolverSettings& settings) {
+/// The lowest centre of an incompressible skeleton settling for 0.4 s on the floor, with PoroSPH's defaults.
+double lowestOfSettlingIncompressibleBody(std::vector<Vec3> positions) {
   ParticleSystem ps(kR);
   addSet(ps, "stone", SetKind::Porous, std::move(positions), kBlock);
-  addSet(ps, "walls", SetKind::Boundary, sampleBox(Vec3(-0.1, -0.04, -0.1), Vec3(0.22, 0.0, 0.22), kR), kFloor);
+  addFloor(ps);
   PorousMaterial stone = material("stone", 0.6, 5000.0, false); // the published Seep's block: bulk 2000 kg/m^3
   stone.youngsModulus = 2.5e5;
   stone.poissonsRatio = 0.3;
   stone.dampingViscosity = 5.0;
-  Solver solver(std::move(ps), FluidProperties{}, {stone}, settings, fixedStep(1e-3), RunState{});
+  Solver solver(std::move(ps), FluidProperties{}, {stone}, SolverSettings{}, fixedStep(1e-3), RunState{});
   double lowest = 1.0;
   for (int n = 0; n < 400; ++n) {
     solver.step(1e-3);
@@ -141,17 +145,15 @@ TEST(WallContact, IncompressibleBodiesRestOnTheFloorNotInIt) {
   // A box's floor layer is held by its full lattice's density, but the underside of a ball has few neighbours and
   // density alone let it sink into the floor: 0.54 r (pressure.wallContact compressibleSkeletons, as under either
   // preset). With the contact constraint: 0.006 r.
-  const double box =
-      lowestOfSettlingIncompressibleBody(sampleBox(Vec3::Zero(), Vec3(0.12, 0.08, 0.12), kR), SolverSettings{});
-  EXPECT_GE(box, kR - 0.1 * kR);
-  EXPECT_GE(lowestOfSettlingIncompressibleBody(ballOnFloor(), SolverSettings{}), kR - 0.1 * kR);
+  EXPECT_GE(lowestOfSettlingIncompressibleBody(sampleBox(Vec3::Zero(), Vec3(0.12, 0.08, 0.12), kR)), kR - 0.1 * kR);
+  EXPECT_GE(lowestOfSettlingIncompressibleBody(ballOnFloor()), kR - 0.1 * kR);
 }
 
 TEST(WallContact, EitherPresetLeavesIncompressibleSkeletonsToTheirDensity) {
   const auto contact = [](const std::string& text, bool compressible) {
     ParticleSystem ps(kR);
     addSet(ps, "stone", SetKind::Porous, sampleBox(Vec3::Zero(), Vec3(0.04, 0.04, 0.04), kR), kBlock);
-    addSet(ps, "walls", SetKind::Boundary, sampleBox(Vec3(-0.04, -0.04, -0.04), Vec3(0.08, 0.0, 0.08), kR), kFloor);
+    addFloor(ps);
     const SolverSettings settings = SolverSettings::read(Dictionary::parse(text, "system/solverDict"));
     const Solver solver(std::move(ps), FluidProperties{}, {material("stone", 0.6, 5000.0, compressible)}, settings,
                         fixedStep(1e-3), RunState{});
