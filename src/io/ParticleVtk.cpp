@@ -129,7 +129,7 @@ int doublesPerParticle(FieldType type) {
 /// The values of Real, Vec3 or Mat3 field `info` of `set` as a flat array of doubles (Mat3 column-major); nullptr
 /// for an Int field or an empty set.
 const double* doublesOf(const ParticleSet& set, const ParticleSet::FieldInfo& info) {
-  if (set.size() == 0) return nullptr;
+  if (set.size() == 0 || !set.has(info.name)) return nullptr;
   switch (info.type) {
   case FieldType::Real:
     return set.real(info.name).data();
@@ -160,7 +160,11 @@ vtkSmartPointer<vtkDataArray> toVtk(const ParticleFile& contents, const Particle
     double* out = array->GetPointer(0);
     for (const ParticleSet* part : contents.parts) {
       const std::size_t values = components * part->size();
-      if (values) std::copy_n(doublesOf(*part, info), values, out);
+      const double* from = doublesOf(*part, info);
+      if (from)
+        std::copy_n(from, values, out);
+      else
+        std::fill_n(out, values, 0.0);
       out += values;
     }
     return array;
@@ -172,10 +176,15 @@ vtkSmartPointer<vtkDataArray> toVtk(const ParticleFile& contents, const Particle
     array->SetNumberOfComponents(9);
     array->SetNumberOfTuples(static_cast<vtkIdType>(count));
     double* out = array->GetPointer(0);
-    for (const ParticleSet* part : contents.parts)
+    for (const ParticleSet* part : contents.parts) {
+      if (!part->has(info.name)) {
+        out = std::fill_n(out, 9 * part->size(), 0.0);
+        continue;
+      }
       for (const Mat3& m : part->mat3(info.name))
         for (int r = 0; r < 3; ++r)
           for (int c = 0; c < 3; ++c) *out++ = m(r, c);
+    }
     return array;
   }
   case FieldType::Int: {
@@ -184,8 +193,13 @@ vtkSmartPointer<vtkDataArray> toVtk(const ParticleFile& contents, const Particle
     array->SetNumberOfComponents(1);
     array->SetNumberOfTuples(static_cast<vtkIdType>(count));
     vtkTypeInt64* out = array->GetPointer(0);
-    for (const ParticleSet* part : contents.parts)
+    for (const ParticleSet* part : contents.parts) {
+      if (!part->has(info.name)) {
+        out = std::fill_n(out, part->size(), vtkTypeInt64{0});
+        continue;
+      }
       for (const std::int64_t value : part->integer(info.name)) *out++ = value;
+    }
     return array;
   }
   }
@@ -225,6 +239,7 @@ std::string firstNonFiniteOutputField(const ParticleFile& contents) {
   for (const auto& info : contents.fields)
     for (const ParticleSet* part : contents.parts) {
       const double* values = doublesOf(*part, info);
+      if (!values) continue; // an Int field, an empty part, or one written as zeros
       const std::size_t count = doublesPerParticle(info.type) * part->size();
       for (std::size_t k = 0; k < count; ++k)
         if (!std::isfinite(values[k])) return info.name;

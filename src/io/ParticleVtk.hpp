@@ -23,7 +23,7 @@ namespace poro {
 void writeParticleSet(const ParticleSet& set, const std::filesystem::path& file, bool binary);
 
 /// What one .vtp file holds: `parts` one after the other (one set, or every porous set in porous.vtp), named
-/// `name` of kind `kind`, with the point arrays `fields`, which every part has.
+/// `name` of kind `kind`, with the point arrays `fields`; a part without one of them is written as zeros there.
 struct ParticleFile {
   std::string name;
   SetKind kind = SetKind::Fluid;

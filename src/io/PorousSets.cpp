@@ -22,10 +22,17 @@ std::vector<FieldInfo> writtenFields(const ParticleSet& set) {
   return fields;
 }
 
-bool sameFields(const std::vector<FieldInfo>& a, const std::vector<FieldInfo>& b) {
-  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const FieldInfo& x, const FieldInfo& y) {
-    return x.name == y.name && x.type == y.type && x.role == y.role;
-  });
+/// Adds to `into` (sorted by name) the fields of `more` it lacks; a name with another type or role is a logic error.
+void unite(std::vector<FieldInfo>& into, const std::vector<FieldInfo>& more, const std::string& setName) {
+  for (const FieldInfo& f : more) {
+    const auto at = std::lower_bound(into.begin(), into.end(), f,
+                                     [](const FieldInfo& a, const FieldInfo& b) { return a.name < b.name; });
+    if (at == into.end() || at->name != f.name)
+      into.insert(at, f);
+    else if (at->type != f.type || at->role != f.role)
+      throw std::logic_error("porous set '" + setName + "' has field '" + f.name +
+                             "' with another type or role than the porous set before it; they cannot share porous.vtp");
+  }
 }
 
 void registerField(ParticleSet& set, const FieldInfo& f) {
@@ -80,15 +87,12 @@ ParticleFile porousFile(const ParticleSystem& particles) {
   for (std::size_t s = 0; s < particles.size(); ++s)
     if (particles[s].kind() == SetKind::Porous) file.parts.push_back(&particles[s]);
   if (file.parts.empty()) return file;
-  file.fields = writtenFields(*file.parts.front());
   for (const ParticleSet* set : file.parts) {
     const FieldInfo* material = set->info(field::materialId);
     if (!material || material->type != FieldType::Int || material->role == Scratch)
       throw std::logic_error("porous set '" + set->name() + "' has no Int field '" + field::materialId +
                              "' of role Output or Restart; porous.vtp could not say which material its particles are");
-    if (!sameFields(writtenFields(*set), file.fields))
-      throw std::logic_error("porous sets '" + file.parts.front()->name() + "' and '" + set->name() +
-                             "' have different output fields; they cannot share porous.vtp");
+    unite(file.fields, writtenFields(*set), set->name());
   }
   return file;
 }

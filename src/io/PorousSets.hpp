@@ -17,9 +17,11 @@ namespace poro {
 inline constexpr const char* kPorousSetName = "porous";
 
 /// What porous.vtp holds: every porous set of `particles` in ParticleSystem order, named "porous" (kind Porous),
-/// with every field of role Output or Restart, sorted by name; Scratch fields are left out. The sets are
-/// referred to, not copied. Throws std::logic_error when the porous sets do not have the same Output/Restart
-/// fields (name, type, role) or lack the Int field materialId.
+/// with every field of role Output or Restart that any of them has, sorted by name; Scratch fields are left out.
+/// Materials differ in their fields (elasticity, wall contact, ...): a set without one of them is written as zeros
+/// there, which its model reads back as unset if it takes the field up later. The sets are referred to, not
+/// copied. Throws std::logic_error when two sets have a field of one name with another type or role, or a set
+/// lacks the Int field materialId.
 ParticleFile porousFile(const ParticleSystem& particles);
 
 /// Splits a set read from `file` (porous.vtp) by its Int field materialId into one set per material, named

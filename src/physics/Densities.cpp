@@ -218,7 +218,7 @@ void computeSaturation(const StepContext& ctx, std::size_t a) {
       for (std::size_t k = 0; k < count; ++k) coverage += poreFill->volumeWeight(scratch.dist[k]);
     saturation[i] = std::clamp(fluidVolume[i] / (phi * n), 0.0, 1.0);
     if (!poreFill) return;
-    if (restCoverage && restCoverage[i] < 0.0) restCoverage[i] = coverage; // the first step: at rest
+    if (restCoverage && !(restCoverage[i] > 0.0)) restCoverage[i] = coverage; // unset: the first step, at rest
     const double pores = PoreFill::poreVolume(phi, compressible, coverage, restCoverage ? restCoverage[i] : -1.0);
     fill[i] = pores > 0.0 ? fluidVolume[i] / pores : (fluidVolume[i] > 0.0 ? 1e9 : 0.0); // squeezed shut
   });

@@ -12,12 +12,12 @@ inline constexpr const char* sampledFixed = "sampledFixed";
 inline constexpr const char* restPosition = "X"; ///< porous: initial position X (METHOD.md §4.1) [m]
 inline constexpr const char* rotation = "R";     ///< elastic porous: rotation R of the last step (warm start, §6.5.2)
 inline constexpr const char* materialId = "materialId"; ///< porous: index of the material in porosityProperties (Int)
-/// compressible porous: kappa, the wall-contact pressure of the last solve (WallContact.hpp) [m^2/s^2]
+/// porous with wall contact: kappa, the wall-contact pressure of the last solve (WallContact.hpp) [m^2/s^2]
 inline constexpr const char* contactPressure = "contactPressure";
-/// compressible porous: the largest wall share D the particle may reach (WallContact.hpp)
+/// porous with wall contact: the largest wall share D the particle may reach (WallContact.hpp); 0 until set
 inline constexpr const char* wallContactLimit = "wallContactLimit";
 /// compressible porous whose adhesion fades in full pores: sum_t V Wbar_st at the particle's first step, the share
-/// of its kernel support its body covered at rest (PoreFill.hpp); -1 until then
+/// of its kernel support its body covered at rest (PoreFill.hpp); 0 until then
 inline constexpr const char* restCoverage = "restCoverage";
 /// parallel runs: where the particle stood when the ranks last migrated and searched afresh; the Verlet skin is
 /// reused, without migrating, until some particle has moved half the skin from it (Solver::searchNeighbours) [m]
@@ -32,9 +32,9 @@ inline constexpr const char* rhoTilde = "rhoTilde";           ///< normalised de
 inline constexpr const char* alpha = "alpha";                 ///< 1/(|G|^2 + Q), the pressure diagonal factor [m^2]
 inline constexpr const char* gradSum = "gradSum";             ///< G = sum f V gradW [1/m]
 inline constexpr const char* accelP = "accelP";               ///< pressure acceleration a^p [m/s^2]
-inline constexpr const char* wallShare = "wallShare";         ///< compressible porous: D = sum_k V_k W_ak
-inline constexpr const char* wallShareStar = "wallShareStar"; ///< compressible porous: D predicted with v*
-inline constexpr const char* wallGradient = "wallGradient";   ///< compressible porous: sum_k V_k gradW_ak [1/m]
+inline constexpr const char* wallShare = "wallShare";         ///< porous with wall contact: D = sum_k V_k W_ak
+inline constexpr const char* wallShareStar = "wallShareStar"; ///< porous with wall contact: D predicted with v*
+inline constexpr const char* wallGradient = "wallGradient";   ///< porous with wall contact: sum_k V_k gradW_ak [1/m]
 /// porous of an adhering material whose adhesion fades: how full the pores near the particle are, 1 = full
 /// (PoreFill.hpp)
 inline constexpr const char* poreFill = "poreFill";

@@ -72,10 +72,10 @@ double PoreFill::poreVolume(double porosity, bool compressible, double coverage,
 
 void PoreFill::registerFields(ParticleSet& set, const PorousMaterial& material) {
   set.addReal(field::poreFill);
-  if (!material.compressible) return;
-  const bool held = set.has(field::restCoverage);
-  auto& coverage = set.addReal(field::restCoverage, Restart);
-  if (!held) std::fill(coverage.begin(), coverage.end(), -1.0);
+  if (material.compressible)
+    set.addReal(field::restCoverage, Restart); // zero (unset) where new: set at the particle's first step
+  else
+    set.drop(field::restCoverage); // read with porous.vtp, which holds every material's fields
 }
 
 double PoreFill::fade(double fill) { return std::clamp((kFadeStart + kFadeWidth - fill) / kFadeWidth, 0.0, 1.0); }

@@ -44,7 +44,8 @@ public:
   static double poreVolume(double porosity, bool compressible, double coverage, double restCoverage);
 
   /// Adds poreFill to the set of an adhering material and, for a compressible one, the restart field
-  /// restCoverage, -1 where it was not read back (set at the particle's first step).
+  /// restCoverage, zero (unset) where it was not read back (set at the particle's first step; older files hold -1
+  /// there). An incompressible material's set loses a restCoverage read from file.
   static void registerFields(ParticleSet& set, const PorousMaterial& material);
 
   /// The factor on the adhesion coefficient of a solid particle whose pores are filled to `fill`.

@@ -2,7 +2,7 @@
 /// The forces fluid and porous particles exert on rigid bodies (physics/RigidBody.hpp): the reaction of the wall
 /// pressure term of Eq. (7) (METHOD.md §6.7), a^p_a += -V_k pi_a gradW_ak for every boundary neighbour k, so
 /// particle a pushes the body's particle k with +m_a V_k pi_a gradW_ak — equal and opposite, momentum is
-/// conserved. The contact pressure of compressible solids (physics/WallContact.hpp) acts the same way. The wall
+/// conserved. The contact pressure of porous solids (physics/WallContact.hpp) acts the same way. The wall
 /// viscosity's reaction comes from the implicit solve (ImplicitTerm::addWallReactions) as forces on the wall
 /// particles. Explicit in the body: the step's final pi and implicit velocities at the positions x^n.
 

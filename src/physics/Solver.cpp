@@ -382,9 +382,20 @@ void Solver::setUpPorousSet(ParticleSet& set, const PorousMaterial& material) {
   set.addInt(field::materialId, Restart);
   auto& fixed = set.addInt(field::fixed, Restart);
   auto& rest = set.addVec3(field::restPosition, Restart);
-  if (material.youngsModulus > 0.0) Elasticity::registerFields(set);
-  if (material.compressible || settings_.pressure.wallContactAllSkeletons) registerWallContactFields(set);
-  if (poreFill_ && material.capillaryStrength > 0.0) PoreFill::registerFields(set, material);
+  // porous.vtp holds every field any material has (zeros where a material has none): what this material does not
+  // use is dropped, or a presence test would run that model (a restart under another preset, a second material).
+  if (material.youngsModulus > 0.0)
+    Elasticity::registerFields(set);
+  else
+    set.drop(field::rotation);
+  if (material.compressible || settings_.pressure.wallContactAllSkeletons)
+    registerWallContactFields(set);
+  else
+    dropWallContactFields(set);
+  if (poreFill_ && material.capillaryStrength > 0.0)
+    PoreFill::registerFields(set, material);
+  else
+    set.drop(field::restCoverage); // read with porous.vtp, which holds every material's fields
   // The rest state is the sampled one: X = x at step 0, read back from the time directory afterwards.
   if (state_.step == 0) rest = set.x();
   if (state_.step == 0) { // 0/ is rewritten at step 0: fixedBox must not stick to it, an edited one applies anew

@@ -11,13 +11,17 @@
 namespace poro {
 
 void registerWallContactFields(ParticleSet& set) {
-  const bool held = set.has(field::wallContactLimit);
-  auto& limit = set.addReal(field::wallContactLimit, Restart);
-  if (!held) std::fill(limit.begin(), limit.end(), -1.0);
+  set.addReal(field::wallContactLimit, Restart); // zero (unset) where new: initialiseWallContactLimits sets it
   set.addReal(field::contactPressure, Restart);
   set.addReal(field::wallShare);
   set.addReal(field::wallShareStar);
   set.addVec3(field::wallGradient);
+}
+
+void dropWallContactFields(ParticleSet& set) {
+  for (const char* name :
+       {field::wallContactLimit, field::contactPressure, field::wallShare, field::wallShareStar, field::wallGradient})
+    set.drop(name);
 }
 
 bool hasWallContact(const ParticleSet& set) { return set.has(field::contactPressure); }
@@ -44,7 +48,7 @@ void initialiseWallContactLimits(const StepContext& ctx, double flatShare) {
     auto& limit = set.real(field::wallContactLimit);
     const auto& share = set.real(field::wallShare);
     parallel::forEach(set.size(), [&](std::size_t i) {
-      if (limit[i] < 0.0) limit[i] = std::max(flatShare, share[i]);
+      if (!(limit[i] > 0.0)) limit[i] = std::max(flatShare, share[i]); // unset: zero, or -1 in older files
     });
   }
 }

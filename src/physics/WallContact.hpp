@@ -10,16 +10,19 @@
 /// untouched: its density constraint holds it at that distance. Incompressible skeletons take part too unless
 /// pressure.wallContact is compressibleSkeletons (either compatibility preset): their density holds a full lattice
 /// there, but a particle short of neighbours (a ball's underside) sank half a radius into the floor.
-/// D^max_a is the flat-wall share, or the particle's share at step 0 where it starts closer (in a corner).
+/// D^max_a is the flat-wall share, or the particle's share where it starts closer (in a corner): at step 0, or at the
+/// first step of a restart that switches the contact on (a body that sank in before stays that deep).
 
 #include "physics/StepContext.hpp"
 #include "sph/Kernel.hpp"
 
 namespace poro {
 
-/// Registers kappa and D^max (restart) and the scratch fields on a porous set. D^max starts
-/// negative (unset) on a set that does not hold it yet; initialiseWallContactLimits sets it.
+/// Registers kappa and D^max (restart) and the scratch fields on a porous set. D^max starts at zero (unset) on a set
+/// that does not hold it yet (files of older versions hold -1 there); initialiseWallContactLimits sets it.
 void registerWallContactFields(ParticleSet& set);
+/// Drops those fields from a porous set without wall contact (read with porous.vtp, which holds every set's fields).
+void dropWallContactFields(ParticleSet& set);
 
 /// Whether the set takes part in wall contact (it has the fields).
 bool hasWallContact(const ParticleSet& set);
@@ -28,7 +31,7 @@ bool hasWallContact(const ParticleSet& set);
 /// (spacing 2r), the particle right above a wall particle. Only the first layer is within H = 4r of it.
 double flatWallShare(const CubicKernel& kernel, double spacing);
 
-/// D^max = max(flat, D) for every particle whose limit is unset; needs the densities of the step.
+/// D^max = max(flat, D) for every particle whose limit is unset (not positive); needs the densities of the step.
 void initialiseWallContactLimits(const StepContext& ctx, double flatShare);
 
 /// D* of every contact set from v* (Eq. 6 restricted to the walls).

@@ -1,5 +1,6 @@
 #include "sph/ParticleSet.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <type_traits>
 #include <stdexcept>
@@ -148,6 +149,15 @@ std::vector<Vec3>& ParticleSet::addVec3(const std::string& n, FieldRole r) { ret
 std::vector<Mat3>& ParticleSet::addMat3(const std::string& n, FieldRole r) { return add<Mat3>(n, FieldType::Mat3, r); }
 std::vector<std::int64_t>& ParticleSet::addInt(const std::string& n, FieldRole r) {
   return add<std::int64_t>(n, FieldType::Int, r);
+}
+
+void ParticleSet::drop(const std::string& name) {
+  const auto it = std::find_if(fields_.begin(), fields_.end(), [&](const auto& f) { return f->info.name == name; });
+  if (it == fields_.end()) return;
+  const bool shared = std::any_of(shared_.begin(), shared_.end(), [&](const auto& s) { return s.second == name; });
+  if (name == field::x || name == field::v || name == field::id || shared)
+    throw std::logic_error("particle set '" + name_ + "': field '" + name + "' cannot be dropped");
+  fields_.erase(it);
 }
 
 bool ParticleSet::has(const std::string& name) const { return find(name) != nullptr; }

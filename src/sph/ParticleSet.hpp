@@ -68,6 +68,10 @@ public:
   /// Whether share(name, storage) would be allowed: `name` unregistered, `storage` a registered scratch field.
   bool canShare(const std::string& name, const std::string& storage) const;
 
+  /// Unregisters field `name` if the set has it (a field read from a file that the set's model does not use).
+  /// x, v, id and the storage of a shared name cannot be dropped (logic error); references to the field dangle.
+  void drop(const std::string& name);
+
   bool has(const std::string& name) const;
   const FieldInfo* info(const std::string& name) const;
   std::vector<FieldInfo> fields() const;

@@ -228,6 +228,66 @@ TEST(Restart, PorousRunRestartsBitForBit) {
   EXPECT_NE(split.read("case.pvd").find("0.1/porous.vtp"), std::string::npos);
 }
 
+/// The sinking sphere at r = 3 cm with a second, stiff and inelastic material (a stone above the water): the two
+/// materials' sets have different fields (only the elastic one has rotations).
+void addStone(CaseRunner& runner) {
+  runner.setKey("system/particleDict", "particleRadius", "0.03");
+  runner.replace("system/particleDict", "min: [-0.001, -0.001, -0.001]", "min: [-0.003, -0.003, -0.003]");
+  runner.replace("system/particleDict", "max: [0.601, 0.8, 0.601]", "max: [0.603, 0.8, 0.603]"); // 0.1 r off
+  runner.replace("system/particleDict", "  - name: tank\n",
+                 "  - name: stone\n"
+                 "    phase: porous\n"
+                 "    material: stone\n"
+                 "    shape: box\n"
+                 "    min: [0.03, 0.45, 0.03]\n"
+                 "    max: [0.15, 0.57, 0.15]\n"
+                 "  - name: tank\n");
+  runner.write("constant/porosityProperties", runner.read("constant/porosityProperties") +
+                                                  "stone:\n  porosity: 0.3\n  bulkDensity: 1800\n"
+                                                  "  compressible: false\n");
+  runner.setKey("system/controlDict", "writeInterval", "0.01");
+}
+
+/// Continues `runner` to `endTime`, with or without `preset: paper`, and reads that time's particles.
+ParticleSystem continueTo(CaseRunner& runner, const std::string& endTime, bool preset) {
+  const std::string solverDict = runner.read("system/solverDict");
+  const std::string block = "compatibility:\n  preset: paper\n";
+  const auto at = solverDict.find(block);
+  if (preset && at == std::string::npos) runner.write("system/solverDict", solverDict + block);
+  if (!preset && at != std::string::npos) runner.write("system/solverDict", solverDict.substr(0, at));
+  runner.setKey("system/controlDict", "endTime", endTime);
+  std::filesystem::remove(runner.dir() / "log.poroSph");
+  EXPECT_EQ(runner.solve("-threads 2"), 0) << runner.read("log.poroSph");
+  return runner.particles(endTime, 0.03);
+}
+
+// Two porous materials with different models share porous.vtp (it failed to write before), and a run switched
+// between the wall contact of every skeleton (PoroSPH's default) and the preset's, which has none for these
+// incompressible ones, continues either way (it stopped on a field the preset's sets lacked before).
+TEST(Restart, PorousMaterialsOfDifferentModelsRestartUnderAnotherPreset) {
+  CaseRunner runner("porous/sinkingSphere");
+  addStone(runner);
+  ASSERT_EQ(runner.sample(), 0) << runner.read("log.sampleParticles");
+
+  const ParticleSystem paper = continueTo(runner, "0.02", true);
+  ASSERT_TRUE(paper.find("pumice") && paper.find("stone"));
+  EXPECT_FALSE(paper.find("pumice")->has(field::contactPressure)) << "the preset: no contact";
+  for (const Mat3& r : paper.find("stone")->mat3(field::rotation)) EXPECT_TRUE(r.isZero()) << "written as zeros";
+  for (const Mat3& r : paper.find("pumice")->mat3(field::rotation)) EXPECT_NEAR(r.determinant(), 1.0, 1e-9);
+
+  const ParticleSystem defaults = continueTo(runner, "0.04", false);
+  for (const char* name : {"pumice", "stone"}) {
+    const auto& limits = defaults.find(name)->real(field::wallContactLimit);
+    ASSERT_FALSE(limits.empty()) << name;
+    EXPECT_TRUE(std::all_of(limits.begin(), limits.end(), [](double d) { return d > 0.0; }))
+        << name << ": every limit set at the first step with the contact";
+  }
+
+  const ParticleSystem again = continueTo(runner, "0.06", true);
+  EXPECT_FALSE(again.find("pumice")->has(field::contactPressure)) << "dropped with the preset";
+  EXPECT_EQ(again.find("stone")->size(), paper.find("stone")->size());
+}
+
 void addPaddle(CaseRunner& runner) {
   // A wall moving into the water from the far side, stopping inside the restart interval.
   runner.replace("system/particleDict", "    layers: 2\n",

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <optional>
 #include <random>
@@ -291,10 +292,30 @@ TEST(PorousSets, OtherParticleFilesAreAnInputError) {
   EXPECT_TRUE(contains(message, "porous.vtp"));
 }
 
-TEST(PorousSets, PorousFileRejectsSetsWithDifferentFields) {
+// Materials differ in their fields (an elastic one has rotations, one with wall contact its contact pressure): the
+// file holds every field any set has, a set without one written as zeros there, and each set reads its own back.
+TEST(PorousSets, SetsWithDifferentFieldsShareTheFileTheMissingOnesWrittenAsZeros) {
   std::mt19937_64 random(13);
   ParticleSystem ps = makeSystem(random);
-  ps[2].addReal("extra", Output);
+  auto& extra = ps[2].addReal("contactPressure", Restart); // set b only
+  for (std::size_t i = 0; i < extra.size(); ++i) extra[i] = 1.0 + static_cast<double>(i);
+  ps[1].drop("R"); // set a only lacks it
+  const ParticleFile file = porousFile(ps);
+  const auto holds = [&](const char* name) {
+    return std::any_of(file.fields.begin(), file.fields.end(), [&](const auto& f) { return f.name == name; });
+  };
+  EXPECT_TRUE(holds("contactPressure"));
+  EXPECT_TRUE(holds("R"));
+
+  ScratchDirectory dir;
+  TimeWriter::writeAll(dir.path(), ps, RunState{}, true);
+  const ParticleSystem read = readParticles(dir.path(), "0", kRadius, materials({"a", "b"}));
+  expectSameSet(ps[1], read[1]);
+  expectSameSet(ps[2], read[2]);
+  EXPECT_EQ(read[1].real("contactPressure"), std::vector<Real>(3, 0.0));
+  for (const Mat3& r : read[1].mat3("R")) EXPECT_TRUE(r.isZero());
+
+  ps[1].addInt("contactPressure", Output); // one name, another type: no file can hold both
   EXPECT_THROW(porousFile(ps), std::logic_error);
 }
 

@@ -81,6 +81,7 @@ TEST(PoreFluidDensity, TheTemplateStatesTheDefaults) {
   EXPECT_EQ(file.xsph, SolverSettings{}.xsph);
   EXPECT_EQ(file.pressure.chebyshev, SolverSettings{}.pressure.chebyshev);
   EXPECT_EQ(file.pressure.spectralRadius, SolverSettings{}.pressure.spectralRadius);
+  EXPECT_EQ(file.pressure.wallContactAllSkeletons, SolverSettings{}.pressure.wallContactAllSkeletons);
 }
 
 TEST(PoreFluidDensity, EitherPresetKeepsEq4AsPublished) {

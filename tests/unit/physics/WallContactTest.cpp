@@ -150,9 +150,13 @@ TEST(WallContact, IncompressibleBodiesRestOnTheFloorNotInIt) {
 }
 
 TEST(WallContact, EitherPresetLeavesIncompressibleSkeletonsToTheirDensity) {
-  const auto contact = [](const std::string& text, bool compressible) {
+  // readBack: the set holds the contact's restart fields, as one read from a run with the contact does.
+  const auto contact = [](const std::string& text, bool compressible, bool readBack = false) {
     ParticleSystem ps(kR);
-    addSet(ps, "stone", SetKind::Porous, sampleBox(Vec3::Zero(), Vec3(0.04, 0.04, 0.04), kR), kBlock);
+    ParticleSet& stone =
+        addSet(ps, "stone", SetKind::Porous, sampleBox(Vec3::Zero(), Vec3(0.04, 0.04, 0.04), kR), kBlock);
+    if (readBack)
+      for (const char* name : {field::contactPressure, field::wallContactLimit}) stone.addReal(name, Restart);
     addFloor(ps);
     const SolverSettings settings = SolverSettings::read(Dictionary::parse(text, "system/solverDict"));
     const Solver solver(std::move(ps), FluidProperties{}, {material("stone", 0.6, 5000.0, compressible)}, settings,
@@ -166,6 +170,9 @@ TEST(WallContact, EitherPresetLeavesIncompressibleSkeletonsToTheirDensity) {
   EXPECT_FALSE(contact("pressure: {wallContact: compressibleSkeletons}\n", false));
   EXPECT_TRUE(contact("compatibility: {preset: reference}\n", true)); // compressible skeletons always
   EXPECT_THROW(contact("pressure: {wallContact: all}\n", false), InputError);
+  // A restart under a preset from a run that had the contact: the fields read back are dropped, not taken for it.
+  EXPECT_FALSE(contact("compatibility: {preset: paper}\n", false, true));
+  EXPECT_TRUE(contact("threads: 0\n", false, true));
 }
 
 } // namespace

@@ -1,5 +1,5 @@
 // ParticleSet: removing particles takes them out of every field and keeps the others in order; selecting and
-// appending (a subdomain's share and the merge back) carry every field, role and constant.
+// appending (a subdomain's share and the merge back) carry every field, role and constant; a dropped field is gone.
 
 #include "sph/ParticleSet.hpp"
 
@@ -148,6 +148,29 @@ TEST(ParticleSet, AScratchFieldSharingAnothersStorageIsOneArray) {
   set.addReal("pressure", Output);
   EXPECT_THROW(set.share("other", "pressure"), std::logic_error) << "a field written out";
   EXPECT_THROW(set.share("other", "missing"), std::logic_error);
+}
+
+TEST(ParticleSet, ADroppedFieldIsGoneFromEveryListAndTheOthersKeepTheirValues) {
+  ParticleSet set("sponge", SetKind::Porous);
+  set.addReal("pressure", Output);
+  set.addReal("contactPressure", Restart);
+  set.resize(3);
+  set.real("pressure")[2] = 7.0;
+  set.drop("contactPressure");
+  EXPECT_FALSE(set.has("contactPressure"));
+  const std::vector<std::string> names = set.fieldNames();
+  EXPECT_EQ(std::count(names.begin(), names.end(), "contactPressure"), 0);
+  EXPECT_EQ(set.real("pressure")[2], 7.0);
+  set.resize(5); // the registry no longer resizes what is gone
+  EXPECT_EQ(set.real("pressure").size(), 5u);
+  set.drop("never registered"); // nothing to do
+  set.addReal("contactPressure", Restart);
+  EXPECT_EQ(set.real("contactPressure"), std::vector<Real>(5, 0.0)) << "registered anew, from zero";
+
+  for (const char* kept : {field::x, field::v, field::id}) EXPECT_THROW(set.drop(kept), std::logic_error) << kept;
+  set.addVec3("rhs");
+  set.share("acceleration", "rhs");
+  EXPECT_THROW(set.drop("rhs"), std::logic_error) << "the storage of a shared name";
 }
 
 } // namespace
