@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <csignal>
@@ -150,10 +151,21 @@ const char* fileOfPhase(const std::string& phase) {
                              : "boundary.vtp";
 }
 
+/// processor<N>/ of a decomposed case (io/ProcessorDirectories.hpp).
+bool isProcessorDirectory(const fs::path& dir) {
+  const std::string name = dir.filename().string();
+  const std::string prefix = "processor";
+  return name.size() > prefix.size() && name.compare(0, prefix.size(), prefix) == 0 &&
+         std::all_of(name.begin() + static_cast<std::ptrdiff_t>(prefix.size()), name.end(),
+                     [](unsigned char c) { return std::isdigit(c) != 0; });
+}
+
 /// The case's system/particleDict when it can be read, for cross-checks against the particle files (without it,
 /// e.g. in unit tests, the checks are skipped; sampleParticles and readCase report a broken one themselves).
 std::optional<Dictionary> readParticleDict(const fs::path& caseDir) {
-  const fs::path path = caseDir / "system" / "particleDict";
+  // A subdomain (processorN/) has no system/ of its own: its case's is the one above it.
+  const fs::path system = isProcessorDirectory(caseDir) ? caseDir.parent_path() / "system" : caseDir / "system";
+  const fs::path path = system / "particleDict";
   if (!fs::exists(path)) return std::nullopt;
   try {
     return Dictionary::read(path.string());
@@ -207,10 +219,14 @@ void checkPhasesPresent(const fs::path& caseDir, const fs::path& dir, const std:
           (fs::is_directory(zero) ? (zero / file).string() + ": no such file" : zero.string() + ": no such directory") +
           ", but " + region.where("phase") + " samples boundary region '" + name +
           "'. Walls that do not move are written once, to 0/boundary.vtp, not to later time directories such as " +
-          dir.filename().string() +
-          "/, so without it the run would have no walls. Restore 0/, or run sampleParticles again with the same "
-          "system/particleDict (it rewrites 0/ and case.pvd) and start again from " +
-          dir.filename().string());
+          dir.filename().string() + "/, so without it the run would have no walls. " +
+          (isProcessorDirectory(caseDir)
+               ? std::string("Reconstruct the case (reconstructPar) and decompose it again (decomposePar -force), "
+                             "or restore ") +
+                     zero.string() + "/"
+               : "Restore 0/, or run sampleParticles again with the same system/particleDict (it rewrites 0/ and "
+                 "case.pvd) and start again from " +
+                     dir.filename().string()));
     }
     throw InputError((dir / file).string() + ": no such file, but " + region.where("phase") + " samples " + phase +
                      " region '" + name + "'" +
@@ -442,8 +458,9 @@ void TimeWriter::write(const ParticleSystem& particles, const RunState& state) {
   const std::string name = timeName(state.time);
   std::vector<std::string> parts;
   // Static walls live in the start directory 0/ only, so rewriting 0/ (step 0) writes them too; rigid.vtp is
-  // written every time.
-  const bool withBoundaries = movingWalls_ || state.step == 0;
+  // written every time. Where there is no 0/ to read them from (a subdomain decomposed from a later time) every
+  // time directory holds them, so that a restart from any of them has its walls.
+  const bool withBoundaries = movingWalls_ || state.step == 0 || !fs::exists(caseDir_ / "0" / "boundary.vtp");
   writeDirectoryAtomically(caseDir_, name, [&](const fs::path& dir) {
     parts = writeSets(dir, particles, withBoundaries, settings_.binary);
     writeRunState(dir, state, particles.particleRadius());
