@@ -349,6 +349,7 @@ PressureStats PressureSolver::iterate(const StepContext& ctx, const std::vector<
     stats.iterations = it;
     stats.meanError = 100.0 * worstMean;
     stats.maxError = 100.0 * worstMax;
+    stats.maxSkeletonError = 100.0 * worstSkeleton;
     if (it >= settings_.minIterations && worstMean <= tolerance && worstMax <= particleBound &&
         worstSkeleton <= skeletonBound) {
       stats.converged = true;
@@ -377,6 +378,7 @@ PressureStats PressureSolver::solve(const StepContext& ctx) const {
       stats.iterations = std::max(stats.iterations, one.iterations);
       stats.meanError = std::max(stats.meanError, one.meanError);
       stats.maxError = std::max(stats.maxError, one.maxError);
+      stats.maxSkeletonError = std::max(stats.maxSkeletonError, one.maxSkeletonError);
       stats.converged = stats.converged && one.converged;
     }
     // The finish of METHOD.md §6.7: a^p from the final pi of every set (solid-solid forces across materials

@@ -18,8 +18,9 @@ namespace poro {
 
 struct PressureStats {
   int iterations = 0;
-  double meanError = 0.0; ///< mean compression of the worst set in the last sweep [% of rho^max]
-  double maxError = 0.0;  ///< largest single-particle compression in the last sweep [%]
+  double meanError = 0.0;        ///< mean compression of the worst set in the last sweep [% of rho^max]
+  double maxError = 0.0;         ///< largest single-particle compression in the last sweep [%]
+  double maxSkeletonError = 0.0; ///< the same over the porous sets' particles alone [%]
   bool converged = false;
 };
 

@@ -782,17 +782,38 @@ void Solver::checkHealth(const Writer& write) {
 void Solver::checkIterations(const Writer& write) {
   const HealthSettings& health = settings_.health;
   if (!report_.pressure.converged) {
-    const auto [s, i] = PressureSolver::mostCompressed(particles_, dynamicSets_);
-    const ParticleSet& set = particles_[s];
-    const Vec3 p = set.x()[i];
+    const PressureSettings& bounds = settings_.pressure;
+    const PressureStats& stats = report_.pressure;
+    const bool particleUnmet = bounds.maxParticleDensityError > 0.0 && stats.maxError > bounds.maxParticleDensityError;
+    const bool skeletonUnmet =
+        bounds.maxSkeletonParticleDensityError > 0.0 && stats.maxSkeletonError > bounds.maxSkeletonParticleDensityError;
+    const bool meanUnmet = stats.meanError > bounds.maxDensityError;
+    // Name the particle the unmet criterion is about: with only the skeletons' bound unmet, a skeleton particle.
+    std::vector<std::size_t> searched;
+    for (std::size_t a : dynamicSets_)
+      if (setMaterials_[a] || meanUnmet || particleUnmet) searched.push_back(a);
+    if (searched.empty()) searched = dynamicSets_;
     std::ostringstream msg;
     msg << std::setprecision(6) << "step " << state_.step << " (time " << state_.time
-        << " s): the pressure solve reached pressure.maxIterations = " << settings_.pressure.maxIterations
-        << " with mean density error " << report_.pressure.meanError << " % (target "
-        << settings_.pressure.maxDensityError << " %); most compressed: " << set.name() << " particle id "
-        << set.integer(field::id)[i] << " at (" << p.x() << ", " << p.y() << ", " << p.z() << "), "
-        << report_.pressure.maxError << " %. To converge: " << whatToChange()
-        << ", or raise pressure.maxIterations in system/solverDict";
+        << " s): the pressure solve reached pressure.maxIterations = " << bounds.maxIterations
+        << " with mean density error " << stats.meanError << " % (target " << bounds.maxDensityError << " %)";
+    if (particleUnmet)
+      msg << ", a particle compressed " << stats.maxError << " % (bound pressure.maxParticleDensityError "
+          << bounds.maxParticleDensityError << " %)";
+    if (skeletonUnmet)
+      msg << ", a skeleton particle compressed " << stats.maxSkeletonError
+          << " % (bound pressure.maxSkeletonParticleDensityError " << bounds.maxSkeletonParticleDensityError << " %)";
+    const auto [s, i] = PressureSolver::mostCompressed(particles_, searched);
+    const ParticleSet& set = particles_[s];
+    if (i < set.size()) { // a rank of a parallel run may hold none of these particles
+      const Vec3 p = set.x()[i];
+      msg << "; most compressed: " << set.name() << " particle id " << set.integer(field::id)[i] << " at (" << p.x()
+          << ", " << p.y() << ", " << p.z() << "), "
+          << 100.0 * set.vec3(PressureSolver::sweepStateField)[i][PressureSolver::kResidual] << " %";
+    }
+    msg << ". To converge: " << whatToChange() << ", or raise pressure.maxIterations";
+    if (particleUnmet || skeletonUnmet) msg << " or the bound";
+    msg << " in system/solverDict";
     if (health.pressureIterations == HealthAction::Stop)
       stopAfterWriting(write, msg.str() + " (health.pressureIterations stop).");
     log::warning(msg.str() + ".");

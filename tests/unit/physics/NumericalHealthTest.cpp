@@ -367,6 +367,33 @@ TEST(Health, PressureIterationLimitCanStopTheRun) {
   EXPECT_NE(message.find("most compressed: fluid particle id"), std::string::npos) << message;
 }
 
+TEST(Health, AnUnmetParticleBoundIsNamedInTheIterationMessage) {
+  // The mean is met at once (50 %), so only the single-particle bound can keep the sweeps going: the message must
+  // name the bound that was not met, and with the skeletons' bound a skeleton particle as the most compressed.
+  const auto message = [](double particleBound, double skeletonBound) {
+    SolverSettings settings;
+    settings.pressure.maxDensityError = 50.0;
+    settings.health.startDensity = 2.0; // fluid is sampled into the sand on purpose (mixedSystem)
+    settings.pressure.maxParticleDensityError = particleBound;
+    settings.pressure.maxSkeletonParticleDensityError = skeletonBound;
+    settings.pressure.minIterations = settings.pressure.maxIterations = 2;
+    settings.health.pressureIterations = HealthAction::Stop;
+    Solver solver(test::mixedSystem(), FluidProperties{}, test::mixedMaterials(), settings, steps(20), RunState{});
+    Writes writes;
+    return runExpectingStop(solver, writes);
+  };
+  const std::string particle = message(1e-9, 0.0);
+  EXPECT_NE(particle.find("(bound pressure.maxParticleDensityError 1e-09 %)"), std::string::npos) << particle;
+  EXPECT_EQ(particle.find("maxSkeletonParticleDensityError"), std::string::npos) << particle;
+  EXPECT_NE(particle.find("or raise pressure.maxIterations or the bound"), std::string::npos) << particle;
+  const std::string skeleton = message(0.0, 1e-9);
+  EXPECT_NE(skeleton.find("(bound pressure.maxSkeletonParticleDensityError 1e-09 %)"), std::string::npos) << skeleton;
+  EXPECT_EQ(skeleton.find("(bound pressure.maxParticleDensityError"), std::string::npos) << skeleton;
+  EXPECT_TRUE(skeleton.find("most compressed: sand particle") != std::string::npos ||
+              skeleton.find("most compressed: foam particle") != std::string::npos)
+      << skeleton;
+}
+
 TEST(TimeLoop, StopAtWriteNowSetWhileRunningWritesAndStops) {
   Solver solver(waterBlock(), FluidProperties{}, {}, SolverSettings{}, steps(10), RunState{});
   Writes writes;
