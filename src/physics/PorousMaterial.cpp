@@ -53,17 +53,18 @@ PorousMaterial readMaterial(const std::string& name, const Dictionary& m) {
   const double bulk = m.getReal("bulkDensity", 0.0, Range::positive());
   p.compressible = m.getBool("compressible", p.compressible);
   p.dragViscosity = m.getReal("dragViscosity", p.dragViscosity, Range::nonNegative());
-  p.youngsModulus = m.getReal("youngsModulus", p.youngsModulus, Range::nonNegative());
+  // Upper bounds beyond any material, so that a slip of the exponent is an input error, not a failed solve: diamond's
+  // E is 1.2e12 Pa, and hourglassControl 1 already removes the modes it is for.
+  p.youngsModulus = m.getReal("youngsModulus", p.youngsModulus, Range::closed(0.0, kMaxYoungsModulus));
   p.poissonsRatio = m.getReal("poissonsRatio", p.poissonsRatio, Range::open(-1.0, 0.5));
-  p.hourglassControl = m.getReal("hourglassControl", p.hourglassControl, Range::nonNegative());
+  p.hourglassControl = m.getReal("hourglassControl", p.hourglassControl, Range::closed(0.0, kMaxHourglassControl));
   p.capillaryStrength = m.getReal("capillaryStrength", p.capillaryStrength, Range::nonNegative());
   p.capillaryFalloff = m.getReal("capillaryFalloff", p.capillaryFalloff, Range::closed(0.0, 1.0));
   p.bloating = m.getReal("bloating", p.bloating, Range::any());
   p.shearSoftening = m.getReal("shearSoftening", p.shearSoftening, Range::any());
   p.volumeSoftening = m.getReal("volumeSoftening", p.volumeSoftening, Range::any());
   p.dampingViscosity = m.getReal("dampingViscosity", p.dampingViscosity, Range::nonNegative());
-  p.boundaryDampingViscosity =
-      m.getReal("boundaryDampingViscosity", p.boundaryDampingViscosity, Range::nonNegative());
+  p.boundaryDampingViscosity = m.getReal("boundaryDampingViscosity", p.boundaryDampingViscosity, Range::nonNegative());
   if (const auto box = m.optionalSubDict("fixedBox")) p.fixedBox = readFixedBox(*box);
   // Before the density checks: a misspelt "solidDensty" gets its "did you mean" rather than "missing".
   m.checkUnknownKeys();

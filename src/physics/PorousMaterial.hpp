@@ -16,6 +16,9 @@
 namespace poro {
 class Dictionary;
 
+inline constexpr double kMaxYoungsModulus = 1e13;   ///< [Pa], above any solid's (diamond 1.2e12)
+inline constexpr double kMaxHourglassControl = 1e3; ///< 1 removes the zero-energy modes (porosityProperties)
+
 struct PorousMaterial {
   std::string name;
   double porosity = 0.0;      ///< phi, 0 <= phi < 1
