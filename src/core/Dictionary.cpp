@@ -353,6 +353,9 @@ struct Dictionary::Impl {
   }
 
   Dictionary toDict(const Entry& e, const YAML::Node& v, const std::string& name, int l) const {
+    // A key whose sub-keys are all commented out ("pressure:" alone) holds no value: every sub-key at its default.
+    if (v.IsNull())
+      return Dictionary(std::make_unique<Impl>(YAML::Node(YAML::NodeType::Map), file, prefix + name + ".", l, known));
     if (!v.IsMap()) {
       const int vl = v.IsNull() ? lineOf(e.key) : lineOf(v);
       throw InputError(at(vl) + "key '" + prefix + name + "': expected a mapping of keys, got " + describeValue(v));
@@ -397,7 +400,8 @@ Dictionary& Dictionary::operator=(const Dictionary& other) {
   return *this;
 }
 
-Dictionary Dictionary::read(const std::string& path) {
+namespace {
+std::string readText(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": cannot open file (it is a directory)");
   std::ifstream in(path, std::ios::binary);
@@ -412,10 +416,19 @@ Dictionary Dictionary::read(const std::string& path) {
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError(path + ": cannot read file");
-  return parse(text.str(), path);
+  return text.str();
+}
+} // namespace
+
+Dictionary Dictionary::read(const std::string& path) { return parse(readText(path), path); }
+
+Dictionary Dictionary::readOptional(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return parse("{}", path);
+  return parse(readText(path), path, true);
 }
 
-Dictionary Dictionary::parse(const std::string& text, const std::string& path) {
+Dictionary Dictionary::parse(const std::string& text, const std::string& path, bool emptyIsMapping) {
   if (const std::string bad = firstNonTextByte(text); !bad.empty())
     throw InputError(path + ":" + bad + "; expected a YAML text file (is this a binary file?)");
   std::vector<YAML::Node> docs;
@@ -436,6 +449,7 @@ Dictionary Dictionary::parse(const std::string& text, const std::string& path) {
     if (!docs[i].IsNull())
       throw InputError(path + ":" + std::to_string(Impl::lineOf(docs[i])) +
                        ": expected a single YAML document, found a second one");
+  if ((docs.empty() || docs[0].IsNull()) && emptyIsMapping) return parse("{}", path);
   if (docs.empty() || docs[0].IsNull())
     throw InputError(path + ":1: expected a YAML mapping of keys, but the file is empty");
   if (!docs[0].IsMap())

@@ -18,15 +18,15 @@ struct Range {
   std::optional<double> min, max;
   bool minOpen = false, maxOpen = false;
 
-  static Range positive() { return {0.0, std::nullopt, true, false}; }           ///< (0, inf)
-  static Range nonNegative() { return {0.0, std::nullopt, false, false}; }       ///< [0, inf)
-  static Range closed(double a, double b) { return {a, b, false, false}; }       ///< [a, b]
-  static Range open(double a, double b) { return {a, b, true, true}; }           ///< (a, b)
-  static Range halfOpen(double a, double b) { return {a, b, false, true}; }      ///< [a, b)
-  static Range atLeast(double a) { return {a, std::nullopt, false, false}; }     ///< [a, inf)
-  static Range any() { return {}; }                                              ///< finite
+  static Range positive() { return {0.0, std::nullopt, true, false}; }       ///< (0, inf)
+  static Range nonNegative() { return {0.0, std::nullopt, false, false}; }   ///< [0, inf)
+  static Range closed(double a, double b) { return {a, b, false, false}; }   ///< [a, b]
+  static Range open(double a, double b) { return {a, b, true, true}; }       ///< (a, b)
+  static Range halfOpen(double a, double b) { return {a, b, false, true}; }  ///< [a, b)
+  static Range atLeast(double a) { return {a, std::nullopt, false, false}; } ///< [a, inf)
+  static Range any() { return {}; }                                          ///< finite
   bool contains(double v) const;
-  std::string describe() const;                                                   ///< "in (0, 1]", "> 0"
+  std::string describe() const; ///< "in (0, 1]", "> 0"
 };
 
 /// One YAML mapping (a whole file or a sub-dictionary) and the file it came from.
@@ -36,8 +36,12 @@ public:
   /// OS's reason, or the missing directory), bytes that are not UTF-8 text (binary files, with line and column),
   /// malformed YAML (with its line) and a non-mapping top level are InputErrors.
   static Dictionary read(const std::string& path);
-  /// Parses YAML text as if it were the file `path` (tests, embedded defaults).
-  static Dictionary parse(const std::string& text, const std::string& path);
+  /// A dictionary every key of which has a default (system/solverDict): a missing file, an empty one and one of
+  /// comments only are an empty mapping; otherwise as read().
+  static Dictionary readOptional(const std::string& path);
+  /// Parses YAML text as if it were the file `path` (tests, embedded defaults); with `emptyIsMapping`, text without
+  /// a document (empty, or comments only) is an empty mapping rather than an InputError.
+  static Dictionary parse(const std::string& text, const std::string& path, bool emptyIsMapping = false);
 
   Dictionary(Dictionary&&) noexcept;
   Dictionary& operator=(Dictionary&&) noexcept;

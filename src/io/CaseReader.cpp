@@ -47,9 +47,10 @@ std::vector<RigidBody::Spec> readRigidBodies(const fs::path& caseDir) {
 }
 
 std::vector<PorousMaterial> readPorousMaterials(const fs::path& caseDir) {
-  const fs::path path = caseDir / "constant" / "porosityProperties";
-  if (!fs::exists(path)) return {};
-  return PorousMaterial::readAll(Dictionary::read(path.string()));
+  // Only needed for porous regions: missing, empty or comments only, the case has no materials.
+  const Dictionary dict = Dictionary::readOptional((caseDir / "constant" / "porosityProperties").string());
+  if (dict.keys().empty()) return {};
+  return PorousMaterial::readAll(dict);
 }
 
 namespace {
@@ -78,8 +79,7 @@ SimulationCase readCase(const fs::path& caseDir, int threads, const fs::path& ti
   const auto [control, output] = readControlDict(caseDir);
 
   const fs::path solverDictPath = caseDir / "system" / "solverDict";
-  SolverSettings solver =
-      fs::exists(solverDictPath) ? SolverSettings::read(Dictionary::read(solverDictPath.string())) : SolverSettings{};
+  SolverSettings solver = SolverSettings::read(Dictionary::readOptional(solverDictPath.string()));
   if (threads > 0) solver.threads = threads;
   const FluidProperties fluid =
       FluidProperties::read(Dictionary::read((caseDir / "constant" / "fluidProperties").string()));
@@ -106,9 +106,10 @@ SimulationCase readCase(const fs::path& caseDir, int threads, const fs::path& ti
       if (sameTime(t.time, control.startTime)) startName = t.name;
     throwIfIncomplete(timesDir, [&](double t) { return startName.empty() && sameTime(t, control.startTime); });
     if (startName.empty())
-      controlDictError("startTime", "no time directory " + timeName(control.startTime) +
-                                        (times.empty() ? "; run sampleParticles first"
-                                                       : "; the case has " + names + " (or use startFrom: latestTime)"));
+      controlDictError("startTime",
+                       "no time directory " + timeName(control.startTime) +
+                           (times.empty() ? "; run sampleParticles first"
+                                          : "; the case has " + names + " (or use startFrom: latestTime)"));
   }
   RunState start = readRunState(timesDir / startName);
   checkSampledRegions(caseDir, timesDir / startName); // before reading what may be gigabytes of particles
@@ -118,8 +119,17 @@ SimulationCase readCase(const fs::path& caseDir, int threads, const fs::path& ti
   ParticleSystem particles =
       endTimeReached ? ParticleSystem(radius)
                      : readParticles(timesDir, startName, radius, materials, timesDir != caseDir); // a rank's share
-  return SimulationCase{control,   output, solver, fluid, std::move(materials), startName, start, std::move(particles),
-                        std::move(wallMotions), std::move(rigidBodies), endTimeReached};
+  return SimulationCase{control,
+                        output,
+                        solver,
+                        fluid,
+                        std::move(materials),
+                        startName,
+                        start,
+                        std::move(particles),
+                        std::move(wallMotions),
+                        std::move(rigidBodies),
+                        endTimeReached};
 }
 
 } // namespace poro

@@ -101,8 +101,8 @@ void splitPorousSet(ParticleSet&& merged, const std::vector<PorousMaterial>& mat
                     const std::filesystem::path& file, bool everyMaterial) {
   const std::string where = file.string() + ": ";
   if (materials.empty())
-    throw InputError(where + "porous particles, but the case defines no porous material; create "
-                             "constant/porosityProperties with the materials the particles were sampled with "
+    throw InputError(where + "porous particles, but the case defines no porous material; define "
+                             "the materials the particles were sampled with in constant/porosityProperties "
                              "(template: etc/caseDicts/porosityProperties)");
   const FieldInfo* material = merged.info(field::materialId);
   if (!material || material->type != FieldType::Int)
