@@ -363,16 +363,42 @@ struct Dictionary::Impl {
     return Dictionary(std::make_unique<Impl>(v, file, prefix + name + ".", l, known));
   }
 
-  /// The candidate nearest to `word` if it is a plausible typo, else "".
+  /// The candidate nearest to `word` if it is a plausible typo, else "". Letter case does not count, and a word
+  /// that a single candidate holds in order with letters left out ("lattice" of "latticeCorrected") matches it.
   static std::string closest(const std::string& word, const std::vector<std::string>& candidates) {
     const std::size_t limit = std::max<std::size_t>(2, word.size() / 3);
+    const std::string w = lower(word);
     std::string best;
     std::size_t bestDistance = limit + 1;
     for (const auto& c : candidates) {
-      const std::size_t d = editDistance(word, c);
+      const std::size_t d = editDistance(w, lower(c));
       if (d < bestDistance) bestDistance = d, best = c;
     }
-    return best;
+    if (!best.empty() || w.size() < 4) return best;
+    std::vector<std::string> holding;
+    for (const auto& c : candidates)
+      if (isSubsequence(w, lower(c))) holding.push_back(c);
+    return holding.size() == 1 ? holding.front() : "";
+  }
+
+  static bool isSubsequence(const std::string& part, const std::string& whole) {
+    std::size_t i = 0;
+    for (char c : whole)
+      if (i < part.size() && part[i] == c) ++i;
+    return i == part.size();
+  }
+
+  /// "the top level" or "'pressure'": the mapping a prefix names.
+  static std::string levelOf(const std::string& p) {
+    return p.empty() ? "the top level" : "'" + p.substr(0, p.size() - 1) + "'";
+  }
+
+  /// A key of this name (letter case aside) known at another level of the file, as "'pressure.wallContact', a key
+  /// of 'pressure'", or "". Levels are known once read, so a level read later than this one is not found.
+  std::string elsewhere(const std::string& key) const {
+    for (const auto& [p, k] : *known)
+      if (p != prefix && lower(k) == lower(key)) return "'" + p + k + "', a key of " + levelOf(p);
+    return "";
   }
 
   /// Known keys directly in this mapping (not in its sub-dictionaries), sorted.
@@ -573,6 +599,12 @@ std::optional<Dictionary> Dictionary::optionalSubDict(const std::string& key) co
   return impl_->toDict(*e, e->value, key, Impl::lineOf(e->key));
 }
 
+Dictionary Dictionary::subDictOrEmpty(const std::string& key) const {
+  if (auto d = optionalSubDict(key)) return std::move(*d);
+  return Dictionary(std::make_unique<Impl>(YAML::Node(YAML::NodeType::Map), impl_->file, impl_->prefix + key + ".",
+                                           impl_->line, impl_->known));
+}
+
 std::vector<Dictionary> Dictionary::getDictList(const std::string& key) const {
   const auto e = impl_->require(key);
   if (!e.value.IsSequence()) impl_->failValue(e, e.value, "a sequence of mappings");
@@ -592,9 +624,12 @@ void Dictionary::checkUnknownKeys() const {
     if (impl_->known->count({impl_->prefix, key})) continue;
     const auto candidates = impl_->knownHere();
     const std::string best = Impl::closest(key, candidates);
+    const std::string other = impl_->elsewhere(key);
     std::string message = "unknown key '" + impl_->path(key) + "'";
     if (!best.empty())
       message += "; did you mean '" + best + "'?";
+    else if (!other.empty())
+      message += "; did you mean " + other + "?";
     else if (!candidates.empty())
       message += "; expected one of: " + joined(candidates, ", ");
     else

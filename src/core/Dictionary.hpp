@@ -91,6 +91,9 @@ public:
   /// path prefix ("pressure.maxIterations").
   Dictionary subDict(const std::string& key) const;
   std::optional<Dictionary> optionalSubDict(const std::string& key) const;
+  /// An optional sub-mapping whose keys all have defaults: absent, it is empty. Reading it still makes its keys
+  /// known, so that one given at the wrong level is pointed to its own ("did you mean 'pressure.wallContact'").
+  Dictionary subDictOrEmpty(const std::string& key) const;
   /// A required sequence of mappings (e.g. particleDict regions).
   std::vector<Dictionary> getDictList(const std::string& key) const;
 

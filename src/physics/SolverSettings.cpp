@@ -52,68 +52,70 @@ SolverSettings SolverSettings::read(const Dictionary& dict) {
   // published, so it turns the defaults of pressure.poreFluidDensity and implicit.adhesionInFullPores back to paper
   // (METHOD.md §3.3, §6.5.6), the skeleton's single-particle bound off (§6.7) and the wall contact back to the
   // compressible skeletons it was made for; the keys themselves still win.
-  if (auto c = dict.optionalSubDict("compatibility")) {
-    s.compatibility = readCompatibility(*c);
-    if (c->has("preset")) {
+  {
+    const Dictionary c = dict.subDictOrEmpty("compatibility");
+    s.compatibility = readCompatibility(c);
+    if (c.has("preset")) {
       s.pressure.latticeCorrectedPoreFluid = s.implicit.adhesionFadesInFullPores = false;
       s.pressure.maxSkeletonParticleDensityError = 0.0;
       s.pressure.wallContactAllSkeletons = false;
       // The reference preset is the authors' iteration sweep for sweep (METHOD.md §10).
-      if (c->getWord("preset", {"paper", "reference"}, "paper") == "reference") s.pressure.chebyshev = false;
+      if (c.getWord("preset", {"paper", "reference"}, "paper") == "reference") s.pressure.chebyshev = false;
     }
   }
-  if (auto p = dict.optionalSubDict("pressure")) {
+  // Every section is read, present or not, and checked once all are read: a key in the wrong one is sent to its own.
+  const Dictionary pressure = dict.subDictOrEmpty("pressure");
+  {
     auto& ps = s.pressure;
-    ps.maxDensityError = p->getReal("maxDensityError", ps.maxDensityError, Range::positive());
+    ps.maxDensityError = pressure.getReal("maxDensityError", ps.maxDensityError, Range::positive());
     ps.maxParticleDensityError =
-        p->getReal("maxParticleDensityError", ps.maxParticleDensityError, Range::nonNegative());
+        pressure.getReal("maxParticleDensityError", ps.maxParticleDensityError, Range::nonNegative());
     ps.maxSkeletonParticleDensityError =
-        p->getReal("maxSkeletonParticleDensityError", ps.maxSkeletonParticleDensityError, Range::nonNegative());
-    ps.minIterations = static_cast<int>(p->getInt("minIterations", ps.minIterations, Range::closed(1, 1e6)));
-    ps.maxIterations = static_cast<int>(p->getInt("maxIterations", ps.maxIterations, Range::closed(1, 1e6)));
+        pressure.getReal("maxSkeletonParticleDensityError", ps.maxSkeletonParticleDensityError, Range::nonNegative());
+    ps.minIterations = static_cast<int>(pressure.getInt("minIterations", ps.minIterations, Range::closed(1, 1e6)));
+    ps.maxIterations = static_cast<int>(pressure.getInt("maxIterations", ps.maxIterations, Range::closed(1, 1e6)));
     if (ps.minIterations > ps.maxIterations)
-      p->fail("minIterations", "expected minIterations <= maxIterations (" + std::to_string(ps.maxIterations) +
-                                   "), got " + std::to_string(ps.minIterations));
-    ps.relaxation = p->getReal("relaxation", ps.relaxation, Range{0.0, 1.0, true, false});
-    ps.warmStart = p->getReal("warmStart", ps.warmStart, Range::closed(0.0, 1.0));
-    ps.chebyshev = readSwitch(*p, "acceleration", "none", "chebyshev", ps.chebyshev);
-    ps.spectralRadius = p->getReal("spectralRadius", ps.spectralRadius, Range::open(0.0, 1.0));
+      pressure.fail("minIterations", "expected minIterations <= maxIterations (" + std::to_string(ps.maxIterations) +
+                                         "), got " + std::to_string(ps.minIterations));
+    ps.relaxation = pressure.getReal("relaxation", ps.relaxation, Range{0.0, 1.0, true, false});
+    ps.warmStart = pressure.getReal("warmStart", ps.warmStart, Range::closed(0.0, 1.0));
+    ps.chebyshev = readSwitch(pressure, "acceleration", "none", "chebyshev", ps.chebyshev);
+    ps.spectralRadius = pressure.getReal("spectralRadius", ps.spectralRadius, Range::open(0.0, 1.0));
     ps.latticeCorrectedPoreFluid =
-        readSwitch(*p, "poreFluidDensity", "paper", "latticeCorrected", ps.latticeCorrectedPoreFluid);
+        readSwitch(pressure, "poreFluidDensity", "paper", "latticeCorrected", ps.latticeCorrectedPoreFluid);
     ps.wallContactAllSkeletons =
-        readSwitch(*p, "wallContact", "compressibleSkeletons", "allSkeletons", ps.wallContactAllSkeletons);
-    p->checkUnknownKeys();
+        readSwitch(pressure, "wallContact", "compressibleSkeletons", "allSkeletons", ps.wallContactAllSkeletons);
   }
-  if (auto i = dict.optionalSubDict("implicit")) {
+  const Dictionary implicit = dict.subDictOrEmpty("implicit");
+  {
     auto& is = s.implicit;
-    is.tolerance = i->getReal("tolerance", is.tolerance, Range::open(0.0, 1.0));
-    is.maxIterations = static_cast<int>(i->getInt("maxIterations", is.maxIterations, Range::closed(1, 1e6)));
-    is.preconditioner = i->getWord("preconditioner", {"blockJacobi", "none"}, "blockJacobi") == "blockJacobi";
-    is.adhesionFadesInFullPores = readSwitch(*i, "adhesionInFullPores", "paper", "fades", is.adhesionFadesInFullPores);
-    i->checkUnknownKeys();
+    is.tolerance = implicit.getReal("tolerance", is.tolerance, Range::open(0.0, 1.0));
+    is.maxIterations = static_cast<int>(implicit.getInt("maxIterations", is.maxIterations, Range::closed(1, 1e6)));
+    is.preconditioner = implicit.getWord("preconditioner", {"blockJacobi", "none"}, "blockJacobi") == "blockJacobi";
+    is.adhesionFadesInFullPores =
+        readSwitch(implicit, "adhesionInFullPores", "paper", "fades", is.adhesionFadesInFullPores);
   }
   s.xsph = dict.getReal("xsph", s.xsph, Range::closed(0.0, 1.0));
-  if (auto n = dict.optionalSubDict("neighbourSearch")) {
-    s.sortInterval = static_cast<int>(n->getInt("sortInterval", s.sortInterval, Range::closed(0, 1e9)));
-    s.searchSkin = n->getReal("skin", s.searchSkin, Range::closed(0.0, 1.0));
-    n->checkUnknownKeys();
-  }
-  if (auto h = dict.optionalSubDict("health")) {
+  const Dictionary search = dict.subDictOrEmpty("neighbourSearch");
+  s.sortInterval = static_cast<int>(search.getInt("sortInterval", s.sortInterval, Range::closed(0, 1e9)));
+  s.searchSkin = search.getReal("skin", s.searchSkin, Range::closed(0.0, 1.0));
+  const Dictionary health = dict.subDictOrEmpty("health");
+  {
     auto& hs = s.health;
-    hs.nonFinite = readAction(*h, "nonFinite", {"stop", "remove"}, hs.nonFinite);
-    hs.leavingDomain = readAction(*h, "leavingDomain", {"warn", "remove", "stop"}, hs.leavingDomain);
-    hs.pressureIterations = readAction(*h, "pressureIterations", {"warn", "stop"}, hs.pressureIterations);
-    hs.implicitIterations = readAction(*h, "implicitIterations", {"warn", "stop"}, hs.implicitIterations);
-    hs.startDensity = h->getReal("startDensity", hs.startDensity, Range::atLeast(1.0));
-    if (auto d = h->optionalSubDict("domain")) {
+    hs.nonFinite = readAction(health, "nonFinite", {"stop", "remove"}, hs.nonFinite);
+    hs.leavingDomain = readAction(health, "leavingDomain", {"warn", "remove", "stop"}, hs.leavingDomain);
+    hs.pressureIterations = readAction(health, "pressureIterations", {"warn", "stop"}, hs.pressureIterations);
+    hs.implicitIterations = readAction(health, "implicitIterations", {"warn", "stop"}, hs.implicitIterations);
+    hs.startDensity = health.getReal("startDensity", hs.startDensity, Range::atLeast(1.0));
+    if (auto d = health.optionalSubDict("domain")) {
       Domain domain{d->getVec3("min"), d->getVec3("max")};
       if (!(domain.max.array() > domain.min.array()).all()) d->fail("max", "expected max > min in every component");
       hs.domain = domain;
       d->checkUnknownKeys();
     }
-    h->checkUnknownKeys();
   }
   s.threads = static_cast<int>(dict.getInt("threads", s.threads, Range::closed(0, 4096)));
+  for (const Dictionary* section : {&pressure, &implicit, &search, &health}) section->checkUnknownKeys();
   dict.checkUnknownKeys();
   return s;
 }

@@ -383,7 +383,36 @@ TEST(Dictionary, SubDictKnownKeysDoNotLeakBetweenLevels) {
   const auto p = d.subDict("pressure");
   EXPECT_NO_THROW(d.checkUnknownKeys());
   EXPECT_EQ(errorOf([&] { p.checkUnknownKeys(); }),
-            kFile + ":3: unknown key 'pressure.tolerance'; no keys are expected here");
+            kFile + ":3: unknown key 'pressure.tolerance'; did you mean 'tolerance', a key of the top level?");
+}
+
+TEST(Dictionary, UnknownKeyHintsIgnoreLetterCaseAndFindLeftOutLetters) {
+  const auto d = parse("XSPH: 0.1\nmaxSkeletonDensityError: 0.2\n");
+  d.getReal("xsph", 0.0);
+  d.getReal("maxSkeletonParticleDensityError", 0.0);
+  d.getReal("maxParticleDensityError", 0.0);
+  EXPECT_EQ(errorOf([&] { d.checkUnknownKeys(); }), kFile + ":1: unknown key 'XSPH'; did you mean 'xsph'?");
+  const auto e = parse("maxSkeletonDensityError: 0.2\n");
+  e.getReal("maxSkeletonParticleDensityError", 0.0);
+  e.getReal("maxParticleDensityError", 0.0);
+  EXPECT_EQ(errorOf([&] { e.checkUnknownKeys(); }),
+            kFile + ":1: unknown key 'maxSkeletonDensityError'; did you mean 'maxSkeletonParticleDensityError'?");
+  const auto f = parse("poreFluidDensity: lattice\n");
+  EXPECT_EQ(errorOf([&] {
+              f.getWord("poreFluidDensity", {"paper", "latticeCorrected"});
+            }),
+            kFile + ":1: key 'poreFluidDensity': expected one of paper, latticeCorrected, got 'lattice'; did you mean "
+                    "'latticeCorrected'?");
+}
+
+TEST(Dictionary, AKeyAtTheWrongLevelIsPointedToItsOwn) {
+  const auto d = parse("wallContact: allSkeletons\npressure:\n  maxIterations: 5\n");
+  const auto p = d.subDict("pressure");
+  p.getInt("maxIterations");
+  p.getString("wallContact", "compressibleSkeletons");
+  p.checkUnknownKeys();
+  EXPECT_EQ(errorOf([&] { d.checkUnknownKeys(); }),
+            kFile + ":1: unknown key 'wallContact'; did you mean 'pressure.wallContact', a key of 'pressure'?");
 }
 
 TEST(Dictionary, UnreadSubDictIsUnknownToParent) {

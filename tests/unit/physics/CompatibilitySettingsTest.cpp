@@ -59,6 +59,20 @@ TEST(CompatibilitySettings, BadValuesAreInputErrorsWithLine) {
   EXPECT_NO_THROW(read("compatibility:\n  pressureSweep: jacobi\n  pressureWarmStartCap: none\n"));
 }
 
+TEST(SolverDict, AKeyInTheWrongSectionIsSentToItsOwnWhetherThatSectionIsGivenOrNot) {
+  EXPECT_EQ(
+      errorOf("preset: paper\n"),
+      "system/solverDict:1: unknown key 'preset'; did you mean 'compatibility.preset', a key of 'compatibility'?");
+  EXPECT_EQ(
+      errorOf("wallContact: allSkeletons\n"),
+      "system/solverDict:1: unknown key 'wallContact'; did you mean 'pressure.wallContact', a key of 'pressure'?");
+  EXPECT_EQ(errorOf("pressure:\n  xsph: 0.1\n"),
+            "system/solverDict:2: unknown key 'pressure.xsph'; did you mean 'xsph', a key of the top level?");
+  EXPECT_EQ(errorOf("pressure:\n  adhesionInFullPores: paper\n"),
+            "system/solverDict:2: unknown key 'pressure.adhesionInFullPores'; did you mean "
+            "'implicit.adhesionInFullPores', a key of 'implicit'?");
+}
+
 PressureSettings pressure(const std::string& text) {
   return SolverSettings::read(Dictionary::parse(text, "system/solverDict")).pressure;
 }
