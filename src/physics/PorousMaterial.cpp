@@ -2,6 +2,7 @@
 
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
+#include "core/Log.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -66,6 +67,20 @@ PorousMaterial readMaterial(const std::string& name, const Dictionary& m) {
   p.dampingViscosity = m.getReal("dampingViscosity", p.dampingViscosity, Range::nonNegative());
   p.boundaryDampingViscosity = m.getReal("boundaryDampingViscosity", p.boundaryDampingViscosity, Range::nonNegative());
   if (const auto box = m.optionalSubDict("fixedBox")) p.fixedBox = readFixedBox(*box);
+  // The elastic terms' keys do nothing without elasticity: say so rather than run as if they were taken.
+  if (!(p.youngsModulus > 0.0)) {
+    const PorousMaterial defaults;
+    const std::pair<const char*, bool> elastic[] = {
+        {"poissonsRatio", p.poissonsRatio != defaults.poissonsRatio},
+        {"hourglassControl", p.hourglassControl != defaults.hourglassControl},
+        {"bloating", p.bloating != defaults.bloating},
+        {"shearSoftening", p.shearSoftening != defaults.shearSoftening},
+        {"volumeSoftening", p.volumeSoftening != defaults.volumeSoftening}};
+    for (const auto& [key, set] : elastic)
+      if (set)
+        log::warning(m.where(key) + ": key '" + name + "." + key +
+                     "' has no effect: it belongs to the elastic terms, which need youngsModulus > 0 (here 0)");
+  }
   // Before the density checks: a misspelt "solidDensty" gets its "did you mean" rather than "missing".
   m.checkUnknownKeys();
 

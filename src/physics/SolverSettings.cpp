@@ -1,6 +1,7 @@
 #include "physics/SolverSettings.hpp"
 
 #include "core/Dictionary.hpp"
+#include "core/Log.hpp"
 
 #include <string>
 #include <vector>
@@ -81,6 +82,10 @@ SolverSettings SolverSettings::read(const Dictionary& dict) {
     ps.warmStart = pressure.getReal("warmStart", ps.warmStart, Range::closed(0.0, 1.0));
     ps.chebyshev = readSwitch(pressure, "acceleration", "none", "chebyshev", ps.chebyshev);
     ps.spectralRadius = pressure.getReal("spectralRadius", ps.spectralRadius, Range::open(0.0, 1.0));
+    if (!ps.chebyshev && pressure.has("spectralRadius"))
+      log::warning(pressure.where("spectralRadius") +
+                   ": key 'pressure.spectralRadius' has no effect: it sets the Chebyshev acceleration, and the sweeps "
+                   "here are Jacobi's alone (pressure.acceleration none, or compatibility.preset reference)");
     ps.latticeCorrectedPoreFluid =
         readSwitch(pressure, "poreFluidDensity", "paper", "latticeCorrected", ps.latticeCorrectedPoreFluid);
     ps.wallContactAllSkeletons =

@@ -167,6 +167,20 @@ TEST(PressureAcceleration, ChebyshevByDefaultAndInPaperModeJacobiAloneUnderTheRe
   EXPECT_EQ(pressure("pressure: {spectralRadius: 0.98}\n").spectralRadius, 0.98);
 }
 
+TEST(PressureAcceleration, ASpectralRadiusWithoutTheAccelerationIsNamedAsHavingNoEffect) {
+  const auto warnings = [](const std::string& text) {
+    ::testing::internal::CaptureStderr();
+    pressure(text);
+    return ::testing::internal::GetCapturedStderr();
+  };
+  for (const char* text : {"pressure:\n  acceleration: none\n  spectralRadius: 0.95\n",
+                           "compatibility: {preset: reference}\npressure:\n  spectralRadius: 0.95\n"})
+    EXPECT_NE(warnings(text).find("system/solverDict:3: key 'pressure.spectralRadius' has no effect"),
+              std::string::npos)
+        << text;
+  EXPECT_EQ(warnings("pressure:\n  spectralRadius: 0.95\n"), "");
+}
+
 TEST(PressureAcceleration, BadValuesAreInputErrorsWithFileAndLine) {
   for (const char* text :
        {"threads: 0\npressure: {acceleration: conjugateGradients}\n", "threads: 0\npressure: {spectralRadius: 1}\n",

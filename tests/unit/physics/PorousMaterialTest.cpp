@@ -188,6 +188,20 @@ INSTANTIATE_TEST_SUITE_P(
         BadMaterial{"sand: 0.4\n", "constant/porosityProperties:1", "'sand'", "expected a mapping"},
         BadMaterial{"{}\n", "constant/porosityProperties:1", "porosityProperties", "no material"}));
 
+TEST(PorousMaterial, ElasticKeysWithoutElasticityAreNamedAsHavingNoEffect) {
+  const auto warnings = [](const std::string& text) {
+    ::testing::internal::CaptureStderr();
+    PorousMaterial::readAll(Dictionary::parse(text, "constant/porosityProperties"));
+    return ::testing::internal::GetCapturedStderr();
+  };
+  const std::string base = "sand:\n  porosity: 0.4\n  solidDensity: 2650\n";
+  const std::string noE = warnings(base + "  hourglassControl: 1\n  bloating: 5\n  poissonsRatio: 0.3\n");
+  EXPECT_TRUE(contains(noE, "constant/porosityProperties:4: key 'sand.hourglassControl' has no effect")) << noE;
+  EXPECT_TRUE(contains(noE, "constant/porosityProperties:5: key 'sand.bloating' has no effect")) << noE;
+  EXPECT_FALSE(contains(noE, "poissonsRatio")) << "the default value given explicitly: " << noE;
+  EXPECT_EQ(warnings(base + "  youngsModulus: 1e5\n  hourglassControl: 1\n  bloating: 5\n"), "");
+}
+
 TEST(PorousMaterial, BothDensitiesNameTheFirst) {
   const std::string message = errorOf("sand:\n  porosity: 0.4\n  solidDensity: 2650\n  bulkDensity: 1590\n");
   EXPECT_TRUE(contains(message, "constant/porosityProperties:3")) << "where the first density is given";
