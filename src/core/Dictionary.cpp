@@ -121,14 +121,11 @@ std::string quoted(const std::string& s) {
 // "got ..." part of a message: the scalar text, or what kind of node stood there.
 std::string describeValue(const YAML::Node& v) {
   switch (v.Type()) {
-  case YAML::NodeType::Scalar:
-    return quoted(v.Scalar());
+  case YAML::NodeType::Scalar: return quoted(v.Scalar());
   case YAML::NodeType::Sequence:
     return "a sequence of " + std::to_string(v.size()) + (v.size() == 1 ? " element" : " elements");
-  case YAML::NodeType::Map:
-    return "a mapping";
-  default:
-    return "an empty value";
+  case YAML::NodeType::Map: return "a mapping";
+  default: return "an empty value";
   }
 }
 
@@ -166,8 +163,7 @@ std::string canonicalScalar(const std::string& s) {
 
 std::string canonicalNode(const YAML::Node& node) {
   switch (node.Type()) {
-  case YAML::NodeType::Scalar:
-    return canonicalScalar(node.Scalar());
+  case YAML::NodeType::Scalar: return canonicalScalar(node.Scalar());
   case YAML::NodeType::Sequence: {
     std::string out = "[";
     for (std::size_t i = 0; i < node.size(); ++i) out += (i ? ", " : "") + canonicalNode(node[i]);
@@ -182,8 +178,7 @@ std::string canonicalNode(const YAML::Node& node) {
       out += (i ? ", " : "") + entries[i].first + ": " + entries[i].second;
     return out + "}";
   }
-  default:
-    return "~";
+  default: return "~";
   }
 }
 
@@ -246,8 +241,8 @@ struct Dictionary::Impl {
       const std::string& key = kv.first.Scalar();
       for (const auto& [name, first] : seen)
         if (name == key)
-          throw InputError(at(l) + "duplicate key '" + path(key) + "' (first given at line " + std::to_string(first) +
-                           ")");
+          throw InputError(at(l) + "duplicate key '" + path(key) + "' (first given at line " +
+                           std::to_string(first) + ")");
       seen.emplace_back(key, l);
     }
   }
@@ -293,7 +288,8 @@ struct Dictionary::Impl {
 
   double toReal(const Entry& e, const YAML::Node& v, const Range& r, const std::string& what = "") const {
     bool integral = false;
-    if (v.IsScalar() && isNonFiniteWord(v.Scalar())) failValue(e, v, expectedNumber("a finite number", r) + what);
+    if (v.IsScalar() && isNonFiniteWord(v.Scalar()))
+      failValue(e, v, expectedNumber("a finite number", r) + what);
     if (!v.IsScalar() || !isDecimal(v.Scalar(), integral))
       failValue(e, v, expectedNumber(r.min || r.max ? "a number" : "a finite number", r) + what);
     const double x = std::strtod(v.Scalar().c_str(), nullptr);
@@ -358,7 +354,8 @@ struct Dictionary::Impl {
       return Dictionary(std::make_unique<Impl>(YAML::Node(YAML::NodeType::Map), file, prefix + name + ".", l, known));
     if (!v.IsMap()) {
       const int vl = v.IsNull() ? lineOf(e.key) : lineOf(v);
-      throw InputError(at(vl) + "key '" + prefix + name + "': expected a mapping of keys, got " + describeValue(v));
+      throw InputError(at(vl) + "key '" + prefix + name + "': expected a mapping of keys, got " +
+                       describeValue(v));
     }
     return Dictionary(std::make_unique<Impl>(v, file, prefix + name + ".", l, known));
   }
@@ -417,7 +414,8 @@ Dictionary::Dictionary(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Dictionary::Dictionary(Dictionary&&) noexcept = default;
 Dictionary& Dictionary::operator=(Dictionary&&) noexcept = default;
 Dictionary::~Dictionary() = default;
-Dictionary::Dictionary(const Dictionary& other) : impl_(other.impl_ ? std::make_unique<Impl>(*other.impl_) : nullptr) {}
+Dictionary::Dictionary(const Dictionary& other)
+    : impl_(other.impl_ ? std::make_unique<Impl>(*other.impl_) : nullptr) {}
 
 Dictionary& Dictionary::operator=(const Dictionary& other) {
   // Never `*impl_ = *other.impl_`: YAML::Node::operator= rebinds the shared node data, which would
@@ -429,7 +427,8 @@ Dictionary& Dictionary::operator=(const Dictionary& other) {
 namespace {
 std::string readText(const std::string& path) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": cannot open file (it is a directory)");
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path + ": cannot open file (it is a directory)");
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     const int error = errno; // before the filesystem calls below can change it
@@ -479,9 +478,10 @@ Dictionary Dictionary::parse(const std::string& text, const std::string& path, b
   if (docs.empty() || docs[0].IsNull())
     throw InputError(path + ":1: expected a YAML mapping of keys, but the file is empty");
   if (!docs[0].IsMap())
-    throw InputError(path + ":" + std::to_string(Impl::lineOf(docs[0])) + ": expected a YAML mapping of keys, got " +
-                     describeValue(docs[0]));
-  return Dictionary(std::make_unique<Impl>(docs[0], path, "", Impl::lineOf(docs[0]), std::make_shared<KnownKeys>()));
+    throw InputError(path + ":" + std::to_string(Impl::lineOf(docs[0])) +
+                     ": expected a YAML mapping of keys, got " + describeValue(docs[0]));
+  return Dictionary(
+      std::make_unique<Impl>(docs[0], path, "", Impl::lineOf(docs[0]), std::make_shared<KnownKeys>()));
 }
 
 const std::string& Dictionary::file() const { return impl_->file; }
@@ -566,8 +566,8 @@ Vec3 Dictionary::getVec3(const std::string& key, const Vec3& fallback) const {
   return e ? impl_->toVec3(*e, e->value) : fallback;
 }
 
-std::vector<double> Dictionary::getReals(const std::string& key, std::size_t count, const std::vector<double>& fallback,
-                                         const Range& range) const {
+std::vector<double> Dictionary::getReals(const std::string& key, std::size_t count,
+                                         const std::vector<double>& fallback, const Range& range) const {
   const auto e = impl_->optional(key);
   if (!e) return fallback;
   const std::string expected = "a sequence of " + std::to_string(count) + " numbers";
@@ -578,8 +578,7 @@ std::vector<double> Dictionary::getReals(const std::string& key, std::size_t cou
   return out;
 }
 
-std::vector<std::string> Dictionary::getWordList(const std::string& key,
-                                                 const std::vector<std::string>& choices) const {
+std::vector<std::string> Dictionary::getWordList(const std::string& key, const std::vector<std::string>& choices) const {
   const auto e = impl_->optional(key);
   std::vector<std::string> out;
   if (!e) return out;

@@ -18,15 +18,15 @@ struct Range {
   std::optional<double> min, max;
   bool minOpen = false, maxOpen = false;
 
-  static Range positive() { return {0.0, std::nullopt, true, false}; }       ///< (0, inf)
-  static Range nonNegative() { return {0.0, std::nullopt, false, false}; }   ///< [0, inf)
-  static Range closed(double a, double b) { return {a, b, false, false}; }   ///< [a, b]
-  static Range open(double a, double b) { return {a, b, true, true}; }       ///< (a, b)
-  static Range halfOpen(double a, double b) { return {a, b, false, true}; }  ///< [a, b)
-  static Range atLeast(double a) { return {a, std::nullopt, false, false}; } ///< [a, inf)
-  static Range any() { return {}; }                                          ///< finite
+  static Range positive() { return {0.0, std::nullopt, true, false}; }           ///< (0, inf)
+  static Range nonNegative() { return {0.0, std::nullopt, false, false}; }       ///< [0, inf)
+  static Range closed(double a, double b) { return {a, b, false, false}; }       ///< [a, b]
+  static Range open(double a, double b) { return {a, b, true, true}; }           ///< (a, b)
+  static Range halfOpen(double a, double b) { return {a, b, false, true}; }      ///< [a, b)
+  static Range atLeast(double a) { return {a, std::nullopt, false, false}; }     ///< [a, inf)
+  static Range any() { return {}; }                                              ///< finite
   bool contains(double v) const;
-  std::string describe() const; ///< "in (0, 1]", "> 0"
+  std::string describe() const;                                                   ///< "in (0, 1]", "> 0"
 };
 
 /// One YAML mapping (a whole file or a sub-dictionary) and the file it came from.

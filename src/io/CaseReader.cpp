@@ -78,8 +78,7 @@ SimulationCase readCase(const fs::path& caseDir, int threads, const fs::path& ti
   const fs::path timesDir = timesDirOrEmpty.empty() ? caseDir : timesDirOrEmpty;
   const auto [control, output] = readControlDict(caseDir);
 
-  const fs::path solverDictPath = caseDir / "system" / "solverDict";
-  SolverSettings solver = SolverSettings::read(Dictionary::readOptional(solverDictPath.string()));
+  SolverSettings solver = SolverSettings::read(Dictionary::readOptional((caseDir / "system" / "solverDict").string()));
   if (threads > 0) solver.threads = threads;
   const FluidProperties fluid =
       FluidProperties::read(Dictionary::read((caseDir / "constant" / "fluidProperties").string()));
@@ -106,10 +105,9 @@ SimulationCase readCase(const fs::path& caseDir, int threads, const fs::path& ti
       if (sameTime(t.time, control.startTime)) startName = t.name;
     throwIfIncomplete(timesDir, [&](double t) { return startName.empty() && sameTime(t, control.startTime); });
     if (startName.empty())
-      controlDictError("startTime",
-                       "no time directory " + timeName(control.startTime) +
-                           (times.empty() ? "; run sampleParticles first"
-                                          : "; the case has " + names + " (or use startFrom: latestTime)"));
+      controlDictError("startTime", "no time directory " + timeName(control.startTime) +
+                                        (times.empty() ? "; run sampleParticles first"
+                                                       : "; the case has " + names + " (or use startFrom: latestTime)"));
   }
   RunState start = readRunState(timesDir / startName);
   checkSampledRegions(caseDir, timesDir / startName); // before reading what may be gigabytes of particles
@@ -119,17 +117,8 @@ SimulationCase readCase(const fs::path& caseDir, int threads, const fs::path& ti
   ParticleSystem particles =
       endTimeReached ? ParticleSystem(radius)
                      : readParticles(timesDir, startName, radius, materials, timesDir != caseDir); // a rank's share
-  return SimulationCase{control,
-                        output,
-                        solver,
-                        fluid,
-                        std::move(materials),
-                        startName,
-                        start,
-                        std::move(particles),
-                        std::move(wallMotions),
-                        std::move(rigidBodies),
-                        endTimeReached};
+  return SimulationCase{control,   output, solver, fluid, std::move(materials), startName, start, std::move(particles),
+                        std::move(wallMotions), std::move(rigidBodies), endTimeReached};
 }
 
 } // namespace poro

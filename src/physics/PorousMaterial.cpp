@@ -65,7 +65,8 @@ PorousMaterial readMaterial(const std::string& name, const Dictionary& m) {
   p.shearSoftening = m.getReal("shearSoftening", p.shearSoftening, Range::any());
   p.volumeSoftening = m.getReal("volumeSoftening", p.volumeSoftening, Range::any());
   p.dampingViscosity = m.getReal("dampingViscosity", p.dampingViscosity, Range::nonNegative());
-  p.boundaryDampingViscosity = m.getReal("boundaryDampingViscosity", p.boundaryDampingViscosity, Range::nonNegative());
+  p.boundaryDampingViscosity =
+      m.getReal("boundaryDampingViscosity", p.boundaryDampingViscosity, Range::nonNegative());
   if (const auto box = m.optionalSubDict("fixedBox")) p.fixedBox = readFixedBox(*box);
   // The elastic terms' keys do nothing without elasticity: say so rather than run as if they were taken.
   if (!(p.youngsModulus > 0.0)) {

@@ -31,7 +31,8 @@ const std::string kControl = "# PoroSPH controlDict\n"  //  1
 Dictionary parse(const std::string& text) { return Dictionary::parse(text, kFile); }
 
 /// The message of the InputError `f` throws; a test failure if it throws nothing or something else.
-template <class F> std::string errorOf(F&& f) {
+template <class F>
+std::string errorOf(F&& f) {
   try {
     f();
   } catch (const InputError& e) {
@@ -150,8 +151,9 @@ TEST(Dictionary, StringAcceptsAnyScalar) {
 
 TEST(Dictionary, KeysFileLineWhere) {
   const auto d = parse(kControl);
-  EXPECT_EQ(d.keys(), (std::vector<std::string>{"application", "startTime", "endTime", "deltaT", "writeControl",
-                                                "writeInterval", "adjustTimeStep", "gravity", "pressure"}));
+  EXPECT_EQ(d.keys(),
+            (std::vector<std::string>{"application", "startTime", "endTime", "deltaT", "writeControl",
+                                      "writeInterval", "adjustTimeStep", "gravity", "pressure"}));
   EXPECT_EQ(d.file(), kFile);
   EXPECT_EQ(d.line(), 2);
   EXPECT_EQ(d.where("deltaT"), kFile + ":5");
@@ -219,7 +221,8 @@ TEST(Dictionary, MissingRequiredKeyReportsMappingLine) {
 TEST(Dictionary, MissingKeyInSubDictNamesFullPathAndSubDictLine) {
   const auto d = parse(kControl);
   const auto p = d.subDict("pressure");
-  EXPECT_EQ(errorOf([&] { p.getReal("relaxation"); }), kFile + ":10: missing required key 'pressure.relaxation'");
+  EXPECT_EQ(errorOf([&] { p.getReal("relaxation"); }),
+            kFile + ":10: missing required key 'pressure.relaxation'");
 }
 
 // --- wrong type ------------------------------------------------------------------------------------
@@ -234,8 +237,10 @@ TEST(Dictionary, StringWhereNumberExpected) {
 
 TEST(Dictionary, CollectionWhereScalarExpected) {
   const auto d = parse("a: 1\nsolver:\n  type: cg\nlist: [1, 2]\n");
-  EXPECT_EQ(errorOf([&] { d.getReal("solver"); }), kFile + ":3: key 'solver': expected a finite number, got a mapping");
-  EXPECT_EQ(errorOf([&] { d.getString("solver"); }), kFile + ":3: key 'solver': expected a string, got a mapping");
+  EXPECT_EQ(errorOf([&] { d.getReal("solver"); }),
+            kFile + ":3: key 'solver': expected a finite number, got a mapping");
+  EXPECT_EQ(errorOf([&] { d.getString("solver"); }),
+            kFile + ":3: key 'solver': expected a string, got a mapping");
   EXPECT_EQ(errorOf([&] { d.getBool("list"); }),
             kFile + ":4: key 'list': expected true or false, got a sequence of 2 elements");
   EXPECT_EQ(errorOf([&] { d.getInt("list"); }),
@@ -259,7 +264,8 @@ TEST(Dictionary, EmptyValueIsReportedOnItsKeyLine) {
 
 TEST(Dictionary, BadBool) {
   const auto d = parse("a: 1\nflag: maybe\n");
-  EXPECT_EQ(errorOf([&] { d.getBool("flag"); }), kFile + ":2: key 'flag': expected true or false, got 'maybe'");
+  EXPECT_EQ(errorOf([&] { d.getBool("flag"); }),
+            kFile + ":2: key 'flag': expected true or false, got 'maybe'");
 }
 
 TEST(Dictionary, WordListsChoicesAndHintsTypos) {
@@ -268,16 +274,18 @@ TEST(Dictionary, WordListsChoicesAndHintsTypos) {
               d.getWord("writeControl", {"timeStep", "runTime"});
             }),
             kFile + ":1: key 'writeControl': expected one of timeStep, runTime, got 'foo'");
-  EXPECT_EQ(errorOf([&] {
-              d.getWord("other", {"timeStep", "runTime"});
-            }),
-            kFile + ":2: key 'other': expected one of timeStep, runTime, got 'timestep'; did you mean 'timeStep'?");
+  EXPECT_EQ(
+      errorOf([&] {
+        d.getWord("other", {"timeStep", "runTime"});
+      }),
+      kFile + ":2: key 'other': expected one of timeStep, runTime, got 'timestep'; did you mean 'timeStep'?");
 }
 
 TEST(Dictionary, Vec3NeedsExactlyThreeFiniteNumbers) {
   const auto d = parse("a: [1, 2]\nb: 5\nc: [1, x, 3]\nd:\n  - 1\n  - 2\n  - .nan\ne: {x: 1}\n");
-  EXPECT_EQ(errorOf([&] { d.getVec3("a"); }),
-            kFile + ":1: key 'a': expected a sequence [x, y, z] of 3 finite numbers, got a sequence of 2 elements");
+  EXPECT_EQ(
+      errorOf([&] { d.getVec3("a"); }),
+      kFile + ":1: key 'a': expected a sequence [x, y, z] of 3 finite numbers, got a sequence of 2 elements");
   EXPECT_EQ(errorOf([&] { d.getVec3("b"); }),
             kFile + ":2: key 'b': expected a sequence [x, y, z] of 3 finite numbers, got '5'");
   EXPECT_EQ(errorOf([&] { d.getVec3("c"); }),
@@ -322,7 +330,8 @@ TEST(Dictionary, RejectsNaNAndInfinity) {
   for (const char* v : {".nan", ".NaN", "nan", "NaN", ".inf", "-.inf", "+.Inf", "inf", "-infinity"})
     EXPECT_EQ(realError(v), kFile + ":1: key 'x': expected a finite number, got '" + v + "'") << v;
   EXPECT_EQ(realError("1e400"), kFile + ":1: key 'x': expected a finite number, got '1e400'");
-  EXPECT_EQ(realError(".inf", Range::positive()), kFile + ":1: key 'x': expected a finite number > 0, got '.inf'");
+  EXPECT_EQ(realError(".inf", Range::positive()),
+            kFile + ":1: key 'x': expected a finite number > 0, got '.inf'");
   EXPECT_EQ(intError(".nan"), kFile + ":1: key 'n': expected an integer, got '.nan'");
 }
 
@@ -346,7 +355,8 @@ TEST(Dictionary, UnknownKeyWithHint) {
   d.getReal("startTime");
   d.getReal("deltaT");
   d.getReal("endTime", 1.0);
-  EXPECT_EQ(errorOf([&] { d.checkUnknownKeys(); }), kFile + ":3: unknown key 'endTim'; did you mean 'endTime'?");
+  EXPECT_EQ(errorOf([&] { d.checkUnknownKeys(); }),
+            kFile + ":3: unknown key 'endTim'; did you mean 'endTime'?");
 }
 
 TEST(Dictionary, UnknownKeyWithoutCloseMatchListsKnownKeys) {
@@ -356,7 +366,8 @@ TEST(Dictionary, UnknownKeyWithoutCloseMatchListsKnownKeys) {
   EXPECT_EQ(errorOf([&] { d.checkUnknownKeys(); }),
             kFile + ":2: unknown key 'banana'; expected one of: endTime, startTime");
   const auto empty = parse("banana: 1\n");
-  EXPECT_EQ(errorOf([&] { empty.checkUnknownKeys(); }), kFile + ":1: unknown key 'banana'; no keys are expected here");
+  EXPECT_EQ(errorOf([&] { empty.checkUnknownKeys(); }),
+            kFile + ":1: unknown key 'banana'; no keys are expected here");
 }
 
 TEST(Dictionary, MarkKnownSilencesAKey) {
@@ -398,9 +409,7 @@ TEST(Dictionary, UnknownKeyHintsIgnoreLetterCaseAndFindLeftOutLetters) {
   EXPECT_EQ(errorOf([&] { e.checkUnknownKeys(); }),
             kFile + ":1: unknown key 'maxSkeletonDensityError'; did you mean 'maxSkeletonParticleDensityError'?");
   const auto f = parse("poreFluidDensity: lattice\n");
-  EXPECT_EQ(errorOf([&] {
-              f.getWord("poreFluidDensity", {"paper", "latticeCorrected"});
-            }),
+  EXPECT_EQ(errorOf([&] { f.getWord("poreFluidDensity", {"paper", "latticeCorrected"}); }),
             kFile + ":1: key 'poreFluidDensity': expected one of paper, latticeCorrected, got 'lattice'; did you mean "
                     "'latticeCorrected'?");
 }
@@ -419,7 +428,8 @@ TEST(Dictionary, UnreadSubDictIsUnknownToParent) {
   const auto d = parse("endTime: 1\npresure:\n  tolerance: 2\n");
   d.getReal("endTime");
   d.optionalSubDict("pressure");
-  EXPECT_EQ(errorOf([&] { d.checkUnknownKeys(); }), kFile + ":2: unknown key 'presure'; did you mean 'pressure'?");
+  EXPECT_EQ(errorOf([&] { d.checkUnknownKeys(); }),
+            kFile + ":2: unknown key 'presure'; did you mean 'pressure'?");
 }
 
 TEST(Dictionary, OptionalSubDictPresent) {
@@ -451,7 +461,8 @@ TEST(Dictionary, DictListElementsHaveIndexedPathsAndLines) {
   EXPECT_EQ(regions[1].getString("name"), "water");
   EXPECT_EQ(errorOf([&] { regions[1].getReal("porosity", Range::halfOpen(0, 1)); }),
             kFile + ":6: key 'regions[1].porosity': expected a number in [0, 1), got '1.2'");
-  EXPECT_EQ(errorOf([&] { regions[1].getReal("density"); }), kFile + ":5: missing required key 'regions[1].density'");
+  EXPECT_EQ(errorOf([&] { regions[1].getReal("density"); }),
+            kFile + ":5: missing required key 'regions[1].density'");
   EXPECT_NO_THROW(regions[0].checkUnknownKeys());
   EXPECT_EQ(errorOf([&] { regions[1].checkUnknownKeys(); }),
             kFile + ":7: unknown key 'regions[1].colour'; expected one of: density, name, porosity");
@@ -461,7 +472,8 @@ TEST(Dictionary, DictListElementsHaveIndexedPathsAndLines) {
 
 TEST(Dictionary, DictListErrors) {
   const auto d = parse("a: 1\nregions:\n  - name: sand\n  - 5\nempty: []\n");
-  EXPECT_EQ(errorOf([&] { d.getDictList("a"); }), kFile + ":1: key 'a': expected a sequence of mappings, got '1'");
+  EXPECT_EQ(errorOf([&] { d.getDictList("a"); }),
+            kFile + ":1: key 'a': expected a sequence of mappings, got '1'");
   EXPECT_EQ(errorOf([&] { d.getDictList("regions"); }),
             kFile + ":4: key 'regions[1]': expected a mapping of keys, got '5'");
   EXPECT_TRUE(d.getDictList("empty").empty());
@@ -527,7 +539,8 @@ TEST(Dictionary, BinaryContentIsNamedWithLineAndColumn) {
 }
 
 TEST(Dictionary, TopLevelMustBeAMapping) {
-  EXPECT_EQ(errorOf([] { parse("# header\nhello\n"); }), kFile + ":2: expected a YAML mapping of keys, got 'hello'");
+  EXPECT_EQ(errorOf([] { parse("# header\nhello\n"); }),
+            kFile + ":2: expected a YAML mapping of keys, got 'hello'");
   EXPECT_EQ(errorOf([] { parse("- a\n- b\n"); }),
             kFile + ":1: expected a YAML mapping of keys, got a sequence of 2 elements");
   EXPECT_NO_THROW(parse("{}\n"));
