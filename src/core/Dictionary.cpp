@@ -348,13 +348,12 @@ struct Dictionary::Impl {
     return out;
   }
 
-  Dictionary toDict(const Entry& e, const YAML::Node& v, const std::string& name, int l) const {
+  Dictionary toDict(const YAML::Node& v, const std::string& name, int l) const {
     // A key whose sub-keys are all commented out ("pressure:" alone) holds no value: every sub-key at its default.
     if (v.IsNull())
       return Dictionary(std::make_unique<Impl>(YAML::Node(YAML::NodeType::Map), file, prefix + name + ".", l, known));
     if (!v.IsMap()) {
-      const int vl = v.IsNull() ? lineOf(e.key) : lineOf(v);
-      throw InputError(at(vl) + "key '" + prefix + name + "': expected a mapping of keys, got " +
+      throw InputError(at(lineOf(v)) + "key '" + prefix + name + "': expected a mapping of keys, got " +
                        describeValue(v));
     }
     return Dictionary(std::make_unique<Impl>(v, file, prefix + name + ".", l, known));
@@ -589,13 +588,13 @@ std::vector<std::string> Dictionary::getWordList(const std::string& key, const s
 
 Dictionary Dictionary::subDict(const std::string& key) const {
   const auto e = impl_->require(key);
-  return impl_->toDict(e, e.value, key, Impl::lineOf(e.key));
+  return impl_->toDict(e.value, key, Impl::lineOf(e.key));
 }
 
 std::optional<Dictionary> Dictionary::optionalSubDict(const std::string& key) const {
   const auto e = impl_->optional(key);
   if (!e) return std::nullopt;
-  return impl_->toDict(*e, e->value, key, Impl::lineOf(e->key));
+  return impl_->toDict(e->value, key, Impl::lineOf(e->key));
 }
 
 Dictionary Dictionary::subDictOrEmpty(const std::string& key) const {
@@ -610,7 +609,7 @@ std::vector<Dictionary> Dictionary::getDictList(const std::string& key) const {
   std::vector<Dictionary> out;
   for (std::size_t i = 0; i < e.value.size(); ++i) {
     const YAML::Node item = e.value[i];
-    out.push_back(impl_->toDict(e, item, key + "[" + std::to_string(i) + "]", Impl::lineOf(item)));
+    out.push_back(impl_->toDict(item, key + "[" + std::to_string(i) + "]", Impl::lineOf(item)));
   }
   return out;
 }
