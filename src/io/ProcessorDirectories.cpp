@@ -10,18 +10,25 @@ namespace fs = std::filesystem;
 
 namespace poro {
 
-fs::path processorDirectory(const fs::path& caseDir, int n) { return caseDir / ("processor" + std::to_string(n)); }
+namespace {
+constexpr const char* kPrefix = "processor";
+} // namespace
+
+fs::path processorDirectory(const fs::path& caseDir, int n) { return caseDir / (kPrefix + std::to_string(n)); }
+
+bool isProcessorDirectory(const fs::path& dir) {
+  const std::string name = dir.filename().string();
+  const std::string prefix = kPrefix;
+  return name.rfind(prefix, 0) == 0 && name.size() > prefix.size() && name.size() <= 15 &&
+         name.find_first_not_of("0123456789", prefix.size()) == std::string::npos;
+}
 
 std::vector<fs::path> listProcessorDirectories(const fs::path& caseDir) {
   std::set<int> ranks;
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(caseDir, ec)) {
-    const std::string name = entry.path().filename().string();
-    const std::string prefix = "processor";
-    if (!entry.is_directory() || name.rfind(prefix, 0) != 0 || name.size() == prefix.size() || name.size() > 15 ||
-        name.find_first_not_of("0123456789", prefix.size()) != std::string::npos)
-      continue;
-    ranks.insert(std::stoi(name.substr(prefix.size())));
+    if (!entry.is_directory() || !isProcessorDirectory(entry.path())) continue;
+    ranks.insert(std::stoi(entry.path().filename().string().substr(std::string(kPrefix).size())));
   }
   std::vector<fs::path> result;
   for (const int rank : ranks) {

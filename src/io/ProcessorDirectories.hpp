@@ -17,6 +17,9 @@ namespace poro {
 /// `<caseDir>/processor<n>`.
 std::filesystem::path processorDirectory(const std::filesystem::path& caseDir, int n);
 
+/// Whether `dir` is named like a subdomain: processor<N>, N in digits.
+bool isProcessorDirectory(const std::filesystem::path& dir);
+
 /// The processor directories of a case, in rank order; empty when it is not decomposed. A gap in the numbering
 /// (processor0 and processor2 without processor1) is an InputError naming the missing one.
 std::vector<std::filesystem::path> listProcessorDirectories(const std::filesystem::path& caseDir);

@@ -6,12 +6,12 @@
 #include "io/AtomicFile.hpp"
 #include "io/ParticleVtk.hpp"
 #include "io/PorousSets.hpp"
+#include "io/ProcessorDirectories.hpp"
 #include "io/SamplingRecord.hpp"
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <csignal>
@@ -149,15 +149,6 @@ const char* fileOfPhase(const std::string& phase) {
          : phase == "porous" ? "porous.vtp"
          : phase == "rigid"  ? "rigid.vtp"
                              : "boundary.vtp";
-}
-
-/// processor<N>/ of a decomposed case (io/ProcessorDirectories.hpp).
-bool isProcessorDirectory(const fs::path& dir) {
-  const std::string name = dir.filename().string();
-  const std::string prefix = "processor";
-  return name.size() > prefix.size() && name.compare(0, prefix.size(), prefix) == 0 &&
-         std::all_of(name.begin() + static_cast<std::ptrdiff_t>(prefix.size()), name.end(),
-                     [](unsigned char c) { return std::isdigit(c) != 0; });
 }
 
 /// The case's system/particleDict when it can be read, for cross-checks against the particle files (without it,
