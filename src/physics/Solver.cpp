@@ -594,6 +594,12 @@ void Solver::measureFluidDensity() {
   }
 }
 
+std::size_t Solver::movingParticles() const {
+  double n = 0.0;
+  for (std::size_t s : dynamicSets_) n += static_cast<double>(ghosts_ ? ghosts_->owned(s) : particles_[s].size());
+  return static_cast<std::size_t>(ghosts_ ? ghosts_->sum(n) : n);
+}
+
 double Solver::maxSpeed() const {
   double result = 0.0;
   for (std::size_t s = 0; s < particles_.size(); ++s) {
@@ -732,6 +738,9 @@ void Solver::checkHealth(const Writer& write) {
                     })
         << " (positions at the start of the step)" << (notFinite.empty() ? " on another rank" : "");
     if (health.nonFinite == HealthAction::Remove) {
+      const auto removed = static_cast<double>(count(notFinite));
+      warnings_.record(RunWarnings::Kind::NonFiniteRemoved, state_.step, state_.time,
+                       static_cast<std::size_t>(ghosts_ ? ghosts_->sum(removed) : removed));
       removeParticles(particles_, notFinite);
       log::warning(msg.str() + "; removed (health.nonFinite remove in system/solverDict). If this recurs, " +
                    whatToChange() + ".");
@@ -750,7 +759,8 @@ void Solver::checkHealth(const Writer& write) {
   if (domain_) {
     const auto outside = findOutside(particles_, dynamicSets_, *domain_);
     const std::size_t n = count(outside);
-    const bool stopAll = health.leavingDomain == HealthAction::Stop && anyRank(n > 0);
+    const auto nAll = static_cast<std::size_t>(ghosts_ ? ghosts_->sum(static_cast<double>(n)) : n);
+    const bool stopAll = health.leavingDomain == HealthAction::Stop && nAll > 0;
     if (stopAll || (n > 0 && (health.leavingDomain != HealthAction::Warn || n > outsideReported_))) {
       std::ostringstream msg;
       msg << std::setprecision(6) << "step " << state_.step << " (time " << state_.time << " s): "
@@ -775,6 +785,10 @@ void Solver::checkHealth(const Writer& write) {
         break;
       }
     }
+    if (nAll > 0) // every rank, also where none of its own particles left
+      warnings_.record(health.leavingDomain == HealthAction::Remove ? RunWarnings::Kind::LeftDomainRemoved
+                                                                    : RunWarnings::Kind::OutsideDomainKept,
+                       state_.step, state_.time, nAll);
   }
   checkIterations(write);
 }
@@ -803,20 +817,14 @@ void Solver::checkIterations(const Writer& write) {
     if (skeletonUnmet)
       msg << ", a skeleton particle compressed " << stats.maxSkeletonError
           << " % (bound pressure.maxSkeletonParticleDensityError " << bounds.maxSkeletonParticleDensityError << " %)";
-    const auto [s, i] = PressureSolver::mostCompressed(particles_, searched);
-    const ParticleSet& set = particles_[s];
-    if (i < set.size()) { // a rank of a parallel run may hold none of these particles
-      const Vec3 p = set.x()[i];
-      msg << "; most compressed: " << set.name() << " particle id " << set.integer(field::id)[i] << " at (" << p.x()
-          << ", " << p.y() << ", " << p.z() << "), "
-          << 100.0 * set.vec3(PressureSolver::sweepStateField)[i][PressureSolver::kResidual] << " %";
-    }
+    msg << mostCompressedOfTheRun(searched);
     msg << ". To converge: " << whatToChange() << ", or raise pressure.maxIterations";
     if (particleUnmet || skeletonUnmet) msg << " or the bound";
     msg << " in system/solverDict";
     if (health.pressureIterations == HealthAction::Stop)
       stopAfterWriting(write, msg.str() + " (health.pressureIterations stop).");
-    log::warning(msg.str() + ".");
+    warnings_.record(RunWarnings::Kind::PressureIterations, state_.step, state_.time);
+    if (!ghosts_ || ghosts_->rank() == 0) log::warning(msg.str() + "."); // the run's solve: one warning, not one per rank
   }
   if (!report_.implicit.converged) {
     std::ostringstream msg;
@@ -827,8 +835,31 @@ void Solver::checkIterations(const Writer& write) {
         << ", or raise implicit.maxIterations in system/solverDict";
     if (health.implicitIterations == HealthAction::Stop)
       stopAfterWriting(write, msg.str() + " (health.implicitIterations stop).");
-    log::warning(msg.str() + ".");
+    warnings_.record(RunWarnings::Kind::ImplicitIterations, state_.step, state_.time);
+    if (!ghosts_ || ghosts_->rank() == 0) log::warning(msg.str() + ".");
   }
+}
+
+std::string Solver::mostCompressedOfTheRun(const std::vector<std::size_t>& sets) const {
+  const auto [s, i] = PressureSolver::mostCompressed(particles_, sets);
+  // Residual, set, id and position of this rank's most compressed particle; none where the rank holds none of them.
+  std::vector<double> candidate;
+  if (i < particles_[s].size()) {
+    const ParticleSet& set = particles_[s];
+    const Vec3 p = set.x()[i];
+    candidate = {set.vec3(PressureSolver::sweepStateField)[i][PressureSolver::kResidual], static_cast<double>(s),
+                 static_cast<double>(set.integer(field::id)[i]), p.x(), p.y(), p.z()};
+  }
+  if (ghosts_) candidate = ghosts_->gather(candidate); // every rank's, in rank order: the first largest wins
+  if (candidate.empty()) return {};
+  std::size_t best = 0;
+  for (std::size_t k = 6; k + 6 <= candidate.size(); k += 6)
+    if (candidate[k] > candidate[best]) best = k;
+  std::ostringstream out;
+  out << std::setprecision(6) << "; most compressed: " << particles_[static_cast<std::size_t>(candidate[best + 1])].name()
+      << " particle id " << static_cast<std::int64_t>(candidate[best + 2]) << " at (" << candidate[best + 3] << ", "
+      << candidate[best + 4] << ", " << candidate[best + 5] << "), " << 100.0 * candidate[best] << " %";
+  return out.str();
 }
 
 void Solver::notePoreFluidFill() const {
@@ -855,6 +886,7 @@ RunOutcome Solver::run(const Writer& write, const Monitor& afterStep, const Obse
   const Timer clock;
   const double startTime = state_.time;
   lastWrittenStep_ = state_.step; // the start time directory is on disk
+  const std::size_t movingAtStart = movingParticles();
   RunOutcome outcome;
   if (state_.step == 0) {
     if (!startChecked_) checkStart();
@@ -936,6 +968,7 @@ RunOutcome Solver::run(const Writer& write, const Monitor& afterStep, const Obse
     summary << "Neighbour lists: " << search_.gridSearches() << " grid searches in " << search_.updates()
             << " steps (skin " << std::setprecision(2) << settings_.searchSkin << " H)\n";
   if (ghosts_) summary << rankSummary(*ghosts_, total);
+  if (warnings_.any()) summary << warnings_.summary(movingAtStart, movingParticles());
   log::info(summary.str());
   if (outcome.end != RunOutcome::End::Signal) log::info("End\n");
   return outcome;

@@ -10,6 +10,7 @@
 #include "physics/PressureSolver.hpp"
 #include "physics/RigidBody.hpp"
 #include "physics/RunState.hpp"
+#include "physics/RunWarnings.hpp"
 #include "physics/SolverSettings.hpp"
 #include "physics/StateSnapshot.hpp"
 #include "physics/StepContext.hpp"
@@ -86,6 +87,8 @@ public:
   const StepReport& lastStep() const { return report_; }
   const std::vector<RigidBody>& rigidBodies() const { return rigidBodies_; }
   const PhaseTimes& phaseTimes() const { return phases_; }
+  /// The warnings the steps of run() gave so far, by kind (the log ends with their summary).
+  const RunWarnings& warnings() const { return warnings_; }
   const TimeControl& timeControl() const { return control_; }
   /// Replaces the time settings while running (runTimeModifiable); the next step uses them.
   void setTimeControl(const TimeControl& control);
@@ -106,6 +109,8 @@ private:
   /// Parallel runs: the own particles' searchOrigin, at a migration.
   void markSearchOrigins();
   double maxSpeed() const;
+  /// The fluid and porous particles of the whole run (every rank's).
+  std::size_t movingParticles() const;
   /// The largest speed but that of a few fast particles (at most one of NeighbourSearch::particlesPerMover
   /// listed particles) that would outrun the search's skin in a step of deltaT: those are its movers.
   double bulkSpeed(double deltaT) const;
@@ -120,6 +125,8 @@ private:
   std::string describeDomain() const;
   void checkHealth(const Writer& write);
   void checkIterations(const Writer& write);
+  /// "; most compressed: <set> particle id <id> at (x, y, z), <residual> %" over every rank's particles of `sets`.
+  std::string mostCompressedOfTheRun(const std::vector<std::size_t>& sets) const;
   void writeState(const Writer& write);
   [[noreturn]] void stopAfterWriting(const Writer& write, const std::string& message);
   std::string whatToChange() const;
@@ -166,6 +173,7 @@ private:
   StateSnapshot snapshot_;          ///< before the current step: undoes a step that ends in NaN
   std::optional<Domain> domain_;    ///< particles outside it fail the leaving-domain check
   std::size_t outsideReported_ = 0; ///< particles outside the domain already warned about (policy warn)
+  RunWarnings warnings_;
   long long lastWrittenStep_ = -1;
   long long sortedAtStep_ = -1;     ///< the step whose Morton sort is done (sortIfDue)
   bool startChecked_ = false;       ///< checkStart() ran (main calls it before anything is written)

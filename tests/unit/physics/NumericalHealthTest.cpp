@@ -283,6 +283,8 @@ TEST(Health, NaNParticlesCanBeRemovedInstead) {
   EXPECT_LT(fluid.size(), before);
   for (std::size_t i = 0; i < fluid.size(); ++i) ASSERT_TRUE(fluid.x()[i].allFinite() && fluid.v()[i].allFinite());
   EXPECT_EQ(writes.steps, std::vector<long long>{5});
+  EXPECT_EQ(solver.warnings().steps(RunWarnings::Kind::NonFiniteRemoved), 1);
+  EXPECT_EQ(solver.warnings().particles(RunWarnings::Kind::NonFiniteRemoved), before - fluid.size());
 }
 
 /// A block falling freely out of a domain whose floor is 1 mm below it.
@@ -302,6 +304,9 @@ TEST(Health, ParticlesLeavingTheDomainAreRemovedByDefault) {
   EXPECT_EQ(solver.run(writes.writer()).end, RunOutcome::End::EndTime);
   EXPECT_EQ(solver.particles()[0].size(), 512u - 64u);
   for (const Vec3& x : solver.particles()[0].x()) EXPECT_GT(x.y(), 0.009);
+  EXPECT_EQ(solver.warnings().steps(RunWarnings::Kind::LeftDomainRemoved), 1);
+  EXPECT_EQ(solver.warnings().particles(RunWarnings::Kind::LeftDomainRemoved), 64u);
+  EXPECT_FALSE(solver.warnings().steps(RunWarnings::Kind::OutsideDomainKept));
 }
 
 TEST(Health, ParticlesLeavingTheDomainCanStopTheRun) {
@@ -320,6 +325,10 @@ TEST(Health, ParticlesLeavingTheDomainCanBeKept) {
   Writes writes;
   EXPECT_EQ(solver.run(writes.writer()).end, RunOutcome::End::EndTime);
   EXPECT_EQ(solver.particles()[0].size(), 512u);
+  // The bottom row is outside from step 14 to the last, 20, and the rows above stay in (see above).
+  EXPECT_EQ(solver.warnings().steps(RunWarnings::Kind::OutsideDomainKept), 7);
+  EXPECT_EQ(solver.warnings().particles(RunWarnings::Kind::OutsideDomainKept), 64u);
+  EXPECT_FALSE(solver.warnings().steps(RunWarnings::Kind::LeftDomainRemoved));
 }
 
 TEST(Health, DefaultDomainIsTheWallBoxGrownByItsLongestSide) {
@@ -365,6 +374,32 @@ TEST(Health, PressureIterationLimitCanStopTheRun) {
   EXPECT_EQ(writes.steps, std::vector<long long>{1});
   EXPECT_NE(message.find("pressure.maxIterations = 1 with mean density error"), std::string::npos) << message;
   EXPECT_NE(message.find("most compressed: fluid particle id"), std::string::npos) << message;
+}
+
+TEST(Health, EveryStepThatReachedAnIterationLimitIsCounted) {
+  // One sweep and one CG iteration on the squeezed, viscous block: each step that warns is counted, and no other.
+  SolverSettings settings;
+  settings.pressure.minIterations = settings.pressure.maxIterations = 1;
+  settings.implicit.maxIterations = 1;
+  settings.implicit.tolerance = 1e-9;
+  FluidProperties viscous;
+  viscous.viscosity = 1.0;
+  Solver solver(squeezedBlock(), viscous, {}, settings, steps(6), RunState{});
+  Writes writes;
+  testing::internal::CaptureStderr();
+  solver.run(writes.writer());
+  const std::string log = testing::internal::GetCapturedStderr();
+  const auto occurrences = [&](const std::string& text) {
+    long long n = 0;
+    for (std::size_t at = log.find(text); at != std::string::npos; at = log.find(text, at + 1)) ++n;
+    return n;
+  };
+  const long long pressure = occurrences("pressure.maxIterations = 1 with");
+  const long long implicit = occurrences("implicit.maxIterations = 1 with");
+  EXPECT_GT(pressure, 0) << log;
+  EXPECT_GT(implicit, 0) << log;
+  EXPECT_EQ(solver.warnings().steps(RunWarnings::Kind::PressureIterations), pressure);
+  EXPECT_EQ(solver.warnings().steps(RunWarnings::Kind::ImplicitIterations), implicit);
 }
 
 TEST(Health, AnUnmetParticleBoundIsNamedInTheIterationMessage) {
