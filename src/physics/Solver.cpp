@@ -890,6 +890,11 @@ RunOutcome Solver::run(const Writer& write, const Monitor& afterStep, const Obse
   RunOutcome outcome;
   if (state_.step == 0) {
     if (!startChecked_) checkStart();
+    if (control_.adjustTimeStep) { // the first step respects the start's speeds and the walls' as every later one
+      state_.nextDeltaT = std::min(
+          state_.nextDeltaT, cflStepSize(control_, maxSpeed(), particles_.spacing(), state_.nextDeltaT, 0));
+      placeWalls(state_.time, state_.nextDeltaT);
+    }
     // 0/ as sampled holds positions and velocities only; rewritten with the start's densities, saturations and
     // (zero) pressures, it offers ParaView every array at t = 0 that later times have.
     writeState(write);

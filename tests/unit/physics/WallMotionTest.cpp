@@ -428,6 +428,34 @@ TEST(MovingWalls, TimeStepRespectsTheTurningPaddleBeforeItStarts) {
   EXPECT_LE(solver.state().nextDeltaT, 0.4 * solver.particles().spacing() / (omega * reach) * (1.0 + 1e-12));
 }
 
+TEST(MovingWalls, TheFirstStepRespectsATurningPaddleAsEveryLaterOne) {
+  // controlDict's deltaT is only the first step's upper bound under adjustTimeStep: a paddle turning from t = 0 at
+  // tip speed omega R must shorten that step as it does every later one (it used to take deltaT, 2.4 spacings).
+  const double omega = 31.4;
+  TimeControl control = fixedStep(0.01);
+  control.adjustTimeStep = true;
+  control.maxCourant = 0.4;
+  control.maxDeltaT = 0.01;
+  control.endTime = 0.5;
+  Solver solver(paddleTank(), FluidProperties{}, {}, SolverSettings{}, control, RunState{}, paddleMotion(omega));
+  const ParticleSet& walls = solver.particles()[1];
+  double reach = 0.0;
+  for (std::size_t k = 0; k < walls.size(); ++k)
+    if (walls.integer(field::objectId)[k] == 1)
+      reach = std::max(reach, std::hypot(walls.x()[k].x() - 0.15, walls.x()[k].z() - 0.15));
+  double firstStep = 0.0;
+  const auto stopAfterTheFirst = [&](Solver& s) {
+    firstStep = s.lastStep().deltaT;
+    TimeControl c = s.timeControl();
+    c.stopAt = TimeControl::StopAt::NoWriteNow;
+    s.setTimeControl(c);
+  };
+  solver.run([](const Solver&) {}, stopAfterTheFirst);
+  EXPECT_EQ(solver.state().step, 1);
+  EXPECT_GT(firstStep, 0.0);
+  EXPECT_LE(firstStep, 0.4 * solver.particles().spacing() / (omega * reach) * (1.0 + 1e-12));
+}
+
 TEST(MovingWalls, TheDefaultDomainHoldsTheCircleOfARotatingWall) {
   // A bar 0.4 m long along x turning about z: the domain is the walls' box grown by its longest side, and the box
   // must be that of the circle the bar sweeps (y up to 0.19 + 0.38), not of the bar at rest (y up to 0.01 +
