@@ -1,6 +1,7 @@
 #include "physics/NumericalHealth.hpp"
 
 #include "core/Parallel.hpp"
+#include "physics/FieldNames.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -45,13 +46,18 @@ std::size_t count(const std::vector<Offenders>& offenders) {
 
 std::optional<Domain> wallDomain(const ParticleSystem& particles, const std::vector<std::size_t>& boundarySets,
                                  const std::vector<Domain>& swept,
-                                 const std::function<void(Vec3& lo, Vec3& hi)>& overRanks) {
+                                 const std::function<void(Vec3& lo, Vec3& hi)>& overRanks,
+                                 const std::vector<long long>& notWalls) {
   Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
-  for (std::size_t s : boundarySets)
-    for (const Vec3& p : particles[s].x()) {
-      lo = lo.cwiseMin(p);
-      hi = hi.cwiseMax(p);
+  for (std::size_t s : boundarySets) {
+    const auto& x = particles[s].x();
+    const std::int64_t* object = notWalls.empty() ? nullptr : particles[s].integer(field::objectId).data();
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      if (object && std::find(notWalls.begin(), notWalls.end(), object[i]) != notWalls.end()) continue;
+      lo = lo.cwiseMin(x[i]);
+      hi = hi.cwiseMax(x[i]);
     }
+  }
   if (lo.x() <= hi.x())
     for (const Domain& d : swept) {
       lo = lo.cwiseMin(d.min);

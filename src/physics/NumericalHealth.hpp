@@ -26,12 +26,14 @@ std::vector<Offenders> findOutside(const ParticleSystem& particles, const std::v
                                    const Domain& domain);
 std::size_t count(const std::vector<Offenders>& offenders);
 
-/// The default domain: the bounding box of the boundary sets and of `swept` (boxes that moving walls sweep, e.g.
-/// the circles of rotating ones) grown by its longest side in every direction; none without boundary particles.
+/// The default domain: the bounding box of the boundary sets' particles where they are (but those of the objects
+/// `notWalls`: rigid bodies, which are checked against it) and of `swept` (boxes that moving walls sweep, e.g. the
+/// circles of rotating ones), grown by its longest side in every direction; none without such particles.
 /// `overRanks` (a parallel run) makes the box every rank's before it grows; every rank must call it.
 std::optional<Domain> wallDomain(const ParticleSystem& particles, const std::vector<std::size_t>& boundarySets,
                                  const std::vector<Domain>& swept = {},
-                                 const std::function<void(Vec3& lo, Vec3& hi)>& overRanks = {});
+                                 const std::function<void(Vec3& lo, Vec3& hi)>& overRanks = {},
+                                 const std::vector<long long>& notWalls = {});
 
 /// "2 fluid particles: id 17 at (0.1, 0.2, 0.3), id 18 at (...)", listing at most five; `position` gives the
 /// position to show for particle i of set s (e.g. the last finite one).

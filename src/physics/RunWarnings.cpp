@@ -16,7 +16,8 @@ void RunWarnings::record(Kind kind, long long step, double time, std::size_t par
   t.lastStep = step;
   t.lastTime = time;
   // Removed particles are gone, so they add up; particles kept outside are the same ones step after step.
-  t.particles = kind == Kind::OutsideDomainKept ? std::max(t.particles, particles) : t.particles + particles;
+  const bool kept = kind == Kind::OutsideDomainKept || kind == Kind::RigidBodiesOutsideKept;
+  t.particles = kept ? std::max(t.particles, particles) : t.particles + particles;
 }
 
 bool RunWarnings::any() const {
@@ -37,7 +38,7 @@ std::string RunWarnings::summary(std::size_t movingAtStart, std::size_t movingAt
     const Tally& t = tallies_[index(kind)];
     if (t.steps == 0) return;
     out << "  ";
-    if (kind == Kind::OutsideDomainKept)
+    if (kind == Kind::OutsideDomainKept || kind == Kind::RigidBodiesOutsideKept)
       out << "up to " << t.particles << ' ';
     else if (t.particles > 0)
       out << t.particles << ' ';
@@ -49,6 +50,7 @@ std::string RunWarnings::summary(std::size_t movingAtStart, std::size_t movingAt
   line(Kind::NonFiniteRemoved, "particles with a NaN or infinite position or velocity deleted");
   line(Kind::LeftDomainRemoved, "particles left the domain and were deleted");
   line(Kind::OutsideDomainKept, "particles outside the domain kept in the run");
+  line(Kind::RigidBodiesOutsideKept, "rigid bodies outside the domain kept in the run");
   if (particles(Kind::NonFiniteRemoved) + particles(Kind::LeftDomainRemoved) > 0)
     out << "  " << movingAtEnd << " of the " << movingAtStart << " fluid and porous particles of the start remain\n";
   return out.str();

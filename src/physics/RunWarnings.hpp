@@ -17,6 +17,7 @@ public:
     NonFiniteRemoved,   ///< NaN or inf: particles deleted (health.nonFinite remove)
     LeftDomainRemoved,  ///< particles left the domain and were deleted (health.leavingDomain remove)
     OutsideDomainKept,  ///< particles outside the domain, kept (health.leavingDomain warn)
+    RigidBodiesOutsideKept, ///< rigid bodies outside the domain, kept (health.leavingDomain warn)
   };
   /// A step that warned of `kind`; `particles` is how many particles of the whole run it concerns (0 for the solves).
   /// Every rank of a parallel run records the same.
@@ -24,7 +25,7 @@ public:
 
   /// How many steps warned of `kind`.
   long long steps(Kind kind) const { return tallies_[index(kind)].steps; }
-  /// Particles deleted (the removals), or the most outside at once (OutsideDomainKept).
+  /// Particles deleted (the removals), or the most particles or bodies outside at once (the kinds that keep them).
   std::size_t particles(Kind kind) const { return tallies_[index(kind)].particles; }
   bool any() const;
 
@@ -33,7 +34,7 @@ public:
   std::string summary(std::size_t movingAtStart, std::size_t movingAtEnd) const;
 
 private:
-  static constexpr std::size_t kKinds = 5;
+  static constexpr std::size_t kKinds = 6;
   static std::size_t index(Kind kind) { return static_cast<std::size_t>(kind); }
   struct Tally {
     long long steps = 0;

@@ -166,16 +166,27 @@ Solver::Solver(ParticleSystem particles, const FluidProperties& fluid, std::vect
     }
     computeWallVolumesWithGhosts();
   }
-  const auto overRanks = [this](Vec3& lo, Vec3& hi) {
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = -ghosts_->max(-lo[a]);
-      hi[a] = ghosts_->max(hi[a]);
-    }
-  };
-  domain_ = settings_.health.domain ? settings_.health.domain
-                                    : wallDomain(particles_, boundarySets_, sweptByRotatingWalls(),
-                                                 ghosts_ ? std::function<void(Vec3&, Vec3&)>(overRanks) : nullptr);
+  updateDomain();
   checkStartPositions();
+}
+
+void Solver::updateDomain() {
+  if (settings_.health.domain) {
+    domain_ = settings_.health.domain;
+    return;
+  }
+  const auto overRanks = [this](Vec3& lo, Vec3& hi) { // one reduction: the largest of hi and of -lo
+    const std::vector<double> all = ghosts_->gather({-lo.x(), -lo.y(), -lo.z(), hi.x(), hi.y(), hi.z()});
+    for (std::size_t k = 0; k + 6 <= all.size(); k += 6)
+      for (int a = 0; a < 3; ++a) {
+        lo[a] = std::min(lo[a], -all[k + a]);
+        hi[a] = std::max(hi[a], all[k + 3 + a]);
+      }
+  };
+  std::vector<long long> rigid; // rigid bodies are checked against the domain, so they do not make it
+  for (const RigidBody& body : rigidBodies_) rigid.push_back(body.objectId());
+  domain_ = wallDomain(particles_, boundarySets_, sweptByRotatingWalls(),
+                       ghosts_ ? std::function<void(Vec3&, Vec3&)>(overRanks) : nullptr, rigid);
 }
 
 void Solver::checkStartPositions() {
@@ -571,6 +582,7 @@ void Solver::step(double deltaT) {
     state_.nextDeltaT =
         cflStepSize(control_, report_.maxSpeed, particles_.spacing(), deltaT, report_.pressure.iterations);
     placeWalls(state_.time, state_.nextDeltaT); // written time directories show the walls where they are
+    if (!wallMotions_.empty()) updateDomain(); // the domain goes where the walls go (a container carried along)
   }
 }
 
@@ -789,8 +801,33 @@ void Solver::checkHealth(const Writer& write) {
       warnings_.record(health.leavingDomain == HealthAction::Remove ? RunWarnings::Kind::LeftDomainRemoved
                                                                     : RunWarnings::Kind::OutsideDomainKept,
                        state_.step, state_.time, nAll);
+    checkRigidBodiesInDomain(write);
   }
   checkIterations(write);
+}
+
+void Solver::checkRigidBodiesInDomain(const Writer& write) {
+  std::size_t outside = 0;
+  for (std::size_t b = 0; b < rigidBodies_.size(); ++b) { // the bodies' states are every rank's
+    const RigidBodyState& body = state_.rigidBodies[b];
+    if (domain_->contains(body.centre)) continue;
+    ++outside;
+    if (settings_.health.leavingDomain == HealthAction::Warn && rigidBodiesOutside_.count(b)) continue;
+    std::ostringstream msg;
+    msg << std::setprecision(6) << "step " << state_.step << " (time " << state_.time << " s): rigid body '"
+        << body.name << "' left the domain " << describeDomain() << ": its centre is at (" << body.centre.x() << ", "
+        << body.centre.y() << ", " << body.centre.z() << "), moving at " << body.velocity.norm()
+        << " m/s. Rigid bodies do not touch walls: a body meets a wall only through the fluid between them, so one "
+           "much denser than the fluid can press it aside and pass through a floor";
+    if (settings_.health.leavingDomain == HealthAction::Warn) {
+      rigidBodiesOutside_.insert(b);
+      log::warning(msg.str() + " (health.leavingDomain warn: it stays in the run).");
+      continue;
+    }
+    stopAfterWriting(write, msg.str() + ". A body is not deleted: the run stops (health.leavingDomain warn in "
+                                        "system/solverDict keeps it in the run).");
+  }
+  if (outside > 0) warnings_.record(RunWarnings::Kind::RigidBodiesOutsideKept, state_.step, state_.time, outside);
 }
 
 void Solver::checkIterations(const Writer& write) {

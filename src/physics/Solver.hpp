@@ -20,6 +20,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <set>
 
 namespace poro {
 
@@ -121,10 +122,16 @@ private:
   void notePoreFluidFill() const;
   void checkStartPositions();
   void checkStartDensity();
+  /// health.domain, or the walls' box where they are now (NumericalHealth.hpp's wallDomain): a function of the time
+  /// alone, so that a restart checks against the domain of a run from the start.
+  void updateDomain();
   /// "(lo) - (hi)" of the domain, and where it comes from when not from health.domain.
   std::string describeDomain() const;
   void checkHealth(const Writer& write);
   void checkIterations(const Writer& write);
+  /// A rigid body whose centre left the domain stops the run (it cannot be deleted), or with health.leavingDomain
+  /// warn is warned of once.
+  void checkRigidBodiesInDomain(const Writer& write);
   /// "; most compressed: <set> particle id <id> at (x, y, z), <residual> %" over every rank's particles of `sets`.
   std::string mostCompressedOfTheRun(const std::vector<std::size_t>& sets) const;
   void writeState(const Writer& write);
@@ -174,6 +181,7 @@ private:
   std::optional<Domain> domain_;    ///< particles outside it fail the leaving-domain check
   std::size_t outsideReported_ = 0; ///< particles outside the domain already warned about (policy warn)
   RunWarnings warnings_;
+  std::set<std::size_t> rigidBodiesOutside_; ///< bodies outside the domain already warned about (policy warn)
   long long lastWrittenStep_ = -1;
   long long sortedAtStep_ = -1;     ///< the step whose Morton sort is done (sortIfDue)
   bool startChecked_ = false;       ///< checkStart() ran (main calls it before anything is written)

@@ -267,6 +267,68 @@ TEST(RigidBody, HeldUntilItsReleaseTimeThenFallsFreely) {
   EXPECT_NEAR(s.centre.y(), start.y() - 9.81 * dt * dt * 30 * 31 / 2.0, 1e-12);
 }
 
+/// cubeInFluid's far box (object 0) as a body shot down at 100 m/s, past the fluid, out of a domain whose floor is
+/// at y = -0.5: its centre (0.52 at the start) is above it after 10 steps of 1 ms and below it from step 11 on.
+Solver bodyShotOutOfTheDomain(HealthAction action, int steps) {
+  SolverSettings settings;
+  settings.health.startDensity = 2.0; // cubeInFluid's fluid touches the cube
+  settings.health.leavingDomain = action;
+  settings.health.domain = Domain{Vec3(-1.0, -0.5, -1.0), Vec3(1.0, 1.0, 1.0)};
+  RigidBody::Spec body = withDensity(2000.0);
+  body.objectId = 0;
+  body.velocity = Vec3(0.0, -100.0, 0.0);
+  TimeControl control = fixedStep(1e-3);
+  control.endTime = steps * 1e-3;
+  return Solver(cubeInFluid(), FluidProperties{}, {}, settings, control, RunState{}, {}, {body});
+}
+
+TEST(RigidBody, ABodyLeavingTheDomainStopsTheRunAsItCannotBeDeleted) {
+  Solver solver = bodyShotOutOfTheDomain(HealthAction::Remove, 15);
+  try {
+    solver.run([](const Solver&) {});
+    ADD_FAILURE() << "the run went on with its body outside the domain";
+  } catch (const NumericalError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("step 11 (time 0.011 s): rigid body 'block' left the domain"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("health.leavingDomain warn in system/solverDict keeps it"), std::string::npos) << message;
+  }
+  EXPECT_EQ(solver.state().step, 11);
+}
+
+TEST(RigidBody, ABodyLeavingTheDomainIsWarnedOfOnceAndCountedWhenKept) {
+  Solver solver = bodyShotOutOfTheDomain(HealthAction::Warn, 15);
+  testing::internal::CaptureStderr();
+  solver.run([](const Solver&) {});
+  const std::string log = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(solver.state().step, 15);
+  EXPECT_NE(log.find("step 11 (time 0.011 s): rigid body 'block' left the domain"), std::string::npos) << log;
+  const std::string left = "rigid body 'block' left the domain";
+  EXPECT_EQ(log.find(left, log.find(left) + 1), std::string::npos) << log; // once
+  EXPECT_EQ(solver.warnings().steps(RunWarnings::Kind::RigidBodiesOutsideKept), 5); // steps 11 to 15
+  EXPECT_EQ(solver.warnings().particles(RunWarnings::Kind::RigidBodiesOutsideKept), 1u);
+}
+
+TEST(RigidBody, ABodyDoesNotMakeTheDefaultDomainWallsDo) {
+  // Without static walls there is no default domain: fluid far from the body is not "outside" the body's box. With
+  // them, the body's own box does not count: the far body sits outside the cube's domain and stops the run.
+  RigidBody::Spec body = withDensity(2000.0);
+  body.objectId = 0;
+  ParticleSystem bodyAndFluid(kR);
+  std::int64_t id = 0;
+  append(bodyAndFluid.add("fluid", SetKind::Fluid), sampleBox(Vec3::Zero(), Vec3(0.2, 0.2, 0.2), kR), 0, id);
+  append(bodyAndFluid.add("boundary", SetKind::Boundary), sampleBox(Vec3(0.5, 0.5, 0.5), Vec3(0.54, 0.54, 0.54), kR),
+         0, id);
+  EXPECT_NO_THROW(Solver(std::move(bodyAndFluid), FluidProperties{}, {}, SolverSettings{}, fixedStep(1e-3),
+                         RunState{}, {}, {body}));
+  TimeControl oneStep = fixedStep(1e-3);
+  oneStep.endTime = 1e-3;
+  SolverSettings touching;
+  touching.health.startDensity = 2.0; // cubeInFluid's fluid touches the cube
+  Solver withCube(cubeInFluid(), FluidProperties{}, {}, touching, oneStep, RunState{}, {}, {body});
+  EXPECT_THROW(withCube.run([](const Solver&) {}), NumericalError);
+}
+
 TEST(RigidBodyForces, WallViscosityPullsTheBodyBackSoMomentumIsConserved) {
   // A cube pushed through still water without gravity: the wall pressure and the wall viscosity are the only
   // forces between them, each with its reaction on the body, so water + cube keep the cube's start momentum to

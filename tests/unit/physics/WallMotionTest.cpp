@@ -480,6 +480,41 @@ TEST(MovingWalls, TheDefaultDomainHoldsTheCircleOfARotatingWall) {
       InputError);
 }
 
+TEST(MovingWalls, TheDefaultDomainGoesWhereATranslatingContainerGoes) {
+  // A closed box 0.12 m wide and its water, carried together at 10 m/s without gravity: after 0.04 s they are
+  // 0.4 m from where they started, beyond the domain of the walls' box at the start (grown by 0.12 + 4 layers).
+  // The domain goes with the walls, so no particle leaves it and the run is not stopped.
+  ParticleSystem ps(kR);
+  std::int64_t id = 0;
+  append(ps.add("fluid", SetKind::Fluid), sampleBox(Vec3::Zero(), Vec3::Constant(0.12), kR), 0, id);
+  const double g = kGap, t = 4 * kR, a = -t - g, b = 0.12 + t + g, lo = -g, hi = 0.12 + g; // two layers
+  ParticleSet& box = ps.add("boundary", SetKind::Boundary);
+  append(box, sampleBox(Vec3(a, a, a), Vec3(b, lo, b), kR), 0, id);     // floor
+  append(box, sampleBox(Vec3(a, hi, a), Vec3(b, b, b), kR), 0, id);     // lid
+  append(box, sampleBox(Vec3(a, lo, a), Vec3(lo, hi, b), kR), 0, id);   // x sides
+  append(box, sampleBox(Vec3(hi, lo, a), Vec3(b, hi, b), kR), 0, id);
+  append(box, sampleBox(Vec3(lo, lo, a), Vec3(hi, hi, lo), kR), 0, id); // z sides
+  append(box, sampleBox(Vec3(lo, lo, hi), Vec3(hi, hi, b), kR), 0, id);
+  const Vec3 u(10.0, 0.0, 0.0);
+  for (Vec3& v : ps[0].v()) v = u;
+  const std::vector<ObjectMotion> carried{
+      {0, "box", "system/particleDict:9", WallMotion({{0.0, Vec3::Zero()}}, u)}};
+  FluidProperties weightless;
+  weightless.gravity = Vec3::Zero();
+  SolverSettings settings;
+  settings.health.leavingDomain = HealthAction::Stop;
+  TimeControl control = fixedStep(1e-3);
+  control.endTime = 0.04;
+  Solver solver(std::move(ps), weightless, {}, settings, control, RunState{}, carried);
+  try {
+    solver.run([](const Solver&) {});
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << e.what();
+  }
+  EXPECT_EQ(solver.state().step, 40);
+  for (const Vec3& x : solver.particles()[0].x()) ASSERT_GT(x.x(), 0.39);
+}
+
 TEST(MovingWalls, TurnedWallOrderAndVolumesDoNotDependOnWhereTheRunStarts) {
   // As for the piston: a restart reads the paddle turned by 1.11 rad; order and volumes are those of a run from 0.
   const double omega = 3.0, t = 0.37;
