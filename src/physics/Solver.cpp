@@ -758,6 +758,7 @@ void Solver::checkHealth(const Writer& write) {
                    whatToChange() + ".");
     } else {
       snapshot_.restore(particles_, state_);
+      placeWalls(state_.time, state_.nextDeltaT); // moving walls and rigid bodies back where the restored state has them
       PressureSolver::formPressures(particles_, dynamicSets_);
       for (std::size_t s : dynamicSets_) { // a restart from the written state solves from a cold start
         auto& deltaV = particles_[s].vec3(field::deltaV);

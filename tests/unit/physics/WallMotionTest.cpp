@@ -293,6 +293,34 @@ TEST(MovingWalls, SolverMovesThePistonExactlyAndLeavesTheChannel) {
   }
 }
 
+TEST(MovingWalls, AStepUndoneForANaNWritesTheWallsWhereTheRestoredStateHasThem) {
+  // Step 3 ends in NaN: the run undoes it and writes the state of step 2, the piston included (it was written one
+  // step ahead of the water).
+  const double u = 0.1;
+  SolverSettings settings;
+  settings.health.startDensity = 1.1; // the channel's edge water starts at 1.031 (its corners have single layers)
+  Solver solver(pistonChannel(), FluidProperties{}, {}, settings, fixedStep(1e-3), RunState{}, pistonMotion(u, 1.0));
+  solver.injectNaN(3);
+  const std::vector<Vec3> rest = solver.particles()[1].vec3(field::restPosition);
+  std::vector<Vec3> written;
+  long long writtenStep = -1;
+  double writtenTime = 0.0;
+  try {
+    solver.run([&](const Solver& s) {
+      writtenStep = s.state().step;
+      writtenTime = s.state().time;
+      written = s.particles()[1].x();
+    });
+    ADD_FAILURE() << "the NaN did not stop the run";
+  } catch (const NumericalError&) {
+  }
+  ASSERT_EQ(writtenStep, 2);
+  const auto& object = solver.particles()[1].integer(field::objectId);
+  for (std::size_t k = 0; k < written.size(); ++k)
+    ASSERT_LE((written[k] - rest[k] - (object[k] == 1 ? Vec3(u * writtenTime, 0, 0) : Vec3::Zero())).norm(), 1e-15)
+        << k;
+}
+
 TEST(MovingWalls, WallOrderAndVolumesDoNotDependOnWhereTheRunStarts) {
   // A restart reads the piston displaced; the Solver sorts and weighs walls at their rest positions, so the
   // order and the Akinci volumes are those of a run from time 0 (bit-exact restarts, METHOD.md §7).
