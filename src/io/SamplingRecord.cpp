@@ -123,17 +123,19 @@ std::string samplingRecord(const Dictionary& particleDict, const fs::path& surfa
       out << (k ? ", " : "") << entries[k].first << ": " << entries[k].second;
     out << "}\n";
   }
-  out << "porousMaterials:  # materialId in porous.vtp: the material of constant/porosityProperties it was sampled as";
-  bool any = false;
+  std::ostringstream sampledAs;
   for (std::size_t s = 0; s < particles.size(); ++s) {
     if (particles[s].kind() != SetKind::Porous) continue;
     const auto material = std::find_if(materials.begin(), materials.end(),
                                        [&](const PorousMaterial& m) { return m.name == particles[s].name(); });
     if (material == materials.end()) continue;
-    out << "\n  - {materialId: " << material - materials.begin() << ", name: " << yamlString(material->name) << "}";
-    any = true;
+    sampledAs << "\n  - {materialId: " << material - materials.begin() << ", name: " << yamlString(material->name)
+              << "}";
   }
-  out << (any ? "\n" : " []\n");
+  // An empty list is written before the comment: after it, YAML would read no value at all.
+  out << "porousMaterials:" << (sampledAs.str().empty() ? " []" : "")
+      << "  # materialId in porous.vtp: the material of constant/porosityProperties it was sampled as" << sampledAs.str()
+      << "\n";
   return out.str();
 }
 

@@ -145,5 +145,20 @@ TEST_F(SamplingRecord, RefusesAMaterialIdThatNamesAnotherMaterial) {
   EXPECT_THROW(checkSampledMaterials(dir_.path(), dir_ / "0", materials({"a", "sand"})), InputError);
 }
 
+TEST(SamplingRecordWithoutPorousRegions, IsReadWithMaterialsDefined) {
+  // A fluid case whose constant/porosityProperties defines materials no region uses: the record's empty list must be
+  // a list, not a comment, or every reader of the case refuses it.
+  ScratchDirectory dir;
+  std::filesystem::create_directories(dir / "system");
+  test::writeAll(dir / "system/particleDict", kParticleDict);
+  ParticleSystem particles(0.01);
+  particles.add("fluid", SetKind::Fluid);
+  const std::string record = samplingRecord(Dictionary::read((dir / "system/particleDict").string()),
+                                            dir / "constant/triSurface", particles, materials({"a"}));
+  TimeWriter::writeAll(dir.path(), particles, RunState{}, false, record);
+  EXPECT_TRUE(contains(record, "porousMaterials: []  # materialId")) << record;
+  EXPECT_NO_THROW(checkSampledMaterials(dir.path(), dir / "0", materials({"a"})));
+}
+
 } // namespace
 } // namespace poro
