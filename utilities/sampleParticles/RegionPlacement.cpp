@@ -25,6 +25,9 @@ const char* phaseName(Phase phase) {
 }
 
 /// "region 'water' (fluid, system/particleDict:5)".
+/// Walls and rigid bodies: regions whose particles are wall particles.
+bool isSolid(Phase phase) { return phase == Phase::Boundary || phase == Phase::Rigid; }
+
 std::string describe(const ParticleRegion& r) {
   return "region '" + r.name + "' (" + phaseName(r.phase) + ", " + r.where + ")";
 }
@@ -109,9 +112,10 @@ void checkOverlaps(const ParticleDict& dict, const ParticleSystem& particles) {
   for (std::size_t a = 0; a < n; ++a)
     for (std::size_t b = 0; b < n; ++b) {
       const Phase pa = dict.regions[a].phase, pb = dict.regions[b].phase;
-      const bool wall = pa == Phase::Boundary || pb == Phase::Boundary;
-      // Fluid may fill a porous region's pores; walls may overlap walls.
-      apart[a][b] = a != b && (wall ? pa != pb : pa == pb);
+      // Walls may overlap walls; nothing else may reach into a wall or a rigid body (whose particles are walls too),
+      // nor a body into another; fluid may fill a porous region's pores.
+      const bool walls = pa == Phase::Boundary && pb == Phase::Boundary;
+      apart[a][b] = a != b && !walls && (isSolid(pa) || isSolid(pb) || pa == pb);
     }
   std::vector<LabelledPoints> points;
   for (std::size_t s = 0; s < particles.size(); ++s)
@@ -122,8 +126,8 @@ void checkOverlaps(const ParticleDict& dict, const ParticleSystem& particles) {
 
   // Named first: the later region, or the fluid or porous one of a wall pair (walls are rarely what moved).
   const ClosePairs& o = overlaps.front();
-  const bool wall = dict.regions[o.a].phase == Phase::Boundary || dict.regions[o.b].phase == Phase::Boundary;
-  const bool swap = !wall || dict.regions[o.b].phase != Phase::Boundary;
+  const bool wall = isSolid(dict.regions[o.a].phase) || isSolid(dict.regions[o.b].phase);
+  const bool swap = !wall || !isSolid(dict.regions[o.b].phase);
   const ParticleRegion &named = dict.regions[swap ? o.b : o.a], &other = dict.regions[swap ? o.a : o.b];
   const Vec3 &namedPoint = swap ? o.pointB : o.pointA, &otherPoint = swap ? o.pointA : o.pointB;
   std::ostringstream msg;
@@ -133,8 +137,8 @@ void checkOverlaps(const ParticleDict& dict, const ParticleSystem& particles) {
       << " m apart, at " << format(namedPoint) << " ('" << named.name << "') and " << format(otherPoint) << " ('"
       << other.name << "'); ";
   if (wall)
-    msg << "a region must not reach into a wall (wall particles lie particleRadius behind a wall's surface, so a "
-           "region may reach up to the surface)";
+    msg << "a region must not reach into a wall or a rigid body (wall particles lie particleRadius behind a wall's "
+           "surface, so a region may reach up to the surface)";
   else
     msg << "two regions must not share space (it would hold twice the particles: twice the rest density, which the "
            "first pressure solve blows apart)";
