@@ -8,6 +8,7 @@
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "core/Parallel.hpp"
 #include "io/CaseLock.hpp"
 #include "io/CaseReader.hpp"
 #include "io/SamplingRecord.hpp"
@@ -60,6 +61,7 @@ int main(int argc, char* argv[]) try {
     std::cout << args.usage();
     return 0;
   }
+  if (args.threads() > 0) parallel::setThreads(args.threads());
   const fs::path caseDir = args.caseDir();
   if (!fs::is_directory(caseDir)) throw InputError(caseDir.string() + ": case directory not found");
   const CaseLock lock(caseDir, "sampleParticles"); // it rewrites 0/ and case.pvd
