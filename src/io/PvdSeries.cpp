@@ -139,12 +139,12 @@ void PvdSeries::write(const fs::path& path) const {
     if (std::find(times.begin(), times.end(), entry.time) == times.end()) times.push_back(entry.time);
     filesOf[entry.part][entry.time] = entry.file;
   }
-  const double first = times.empty() ? 0.0 : *std::min_element(times.begin(), times.end());
-  // Only the walls are written once for the whole run; a surface fluidSurface made at the first time (or any
-  // other set with one file there) belongs to that time alone.
-  const auto isStatic = [&](const std::string& part, const std::map<double, std::string>& files) {
-    const bool walls = part == kStaticPart || part.rfind(std::string(kStaticPart) + ".", 0) == 0; // or a subdomain's
-    return walls && files.size() == 1 && files.begin()->first == first;
+  // Walls are written where they change: static ones once, moving ones at every time. A time without a walls file
+  // shows the latest one before it: the static walls of 0/ also at the times before a later time that holds them
+  // (a case reconstructed from subdomains decomposed at that time). Any other part, such as a surface fluidSurface
+  // made at one time, belongs to its own times alone.
+  const auto carriedForward = [&](const std::string& part) {
+    return part == kStaticPart || part.rfind(std::string(kStaticPart) + ".", 0) == 0; // or a subdomain's
   };
   std::ostringstream out;
   out << "<?xml version=\"1.0\"?>\n"
@@ -156,7 +156,7 @@ void PvdSeries::write(const fs::path& path) const {
       auto latest = files.upper_bound(time);
       if (latest == files.begin()) continue; // the part does not exist yet
       --latest;
-      if (latest->first != time && !isStatic(parts[index], files)) continue; // no file of this time
+      if (latest->first != time && !carriedForward(parts[index])) continue; // no file of this time
       out << "    <DataSet timestep=\"" << formatTime(time) << "\" group=\"\" part=\"" << index << "\" name=\""
           << escapeXml(parts[index]) << "\" file=\"" << escapeXml(latest->second) << "\"/>\n";
     }

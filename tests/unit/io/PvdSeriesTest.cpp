@@ -77,6 +77,30 @@ TEST(PvdSeries, AStaticSetIsListedAtEveryTime) {
   EXPECT_FALSE(contains(readAll(dir / "purged.pvd"), "boundary"));
 }
 
+TEST(PvdSeries, WallsOfALaterTimeDoNotHideTheStaticOnesBeforeIt) {
+  // A case run to 0.2, decomposed there and reconstructed: 0.2/ holds walls of its own (each subdomain needs them),
+  // the times between hold none. They show 0/'s walls, and 0.2 and later their own.
+  ScratchDirectory dir;
+  PvdSeries series;
+  series.add(0.0, "boundary", "0/boundary.vtp");
+  for (const char* name : {"0", "0.1", "0.2", "0.3"})
+    series.add(std::stod(name), "fluid", std::string(name) + "/fluid.vtp");
+  series.add(0.2, "boundary", "0.2/boundary.vtp");
+  series.write(dir / "case.pvd");
+  const std::string text = readAll(dir / "case.pvd");
+  EXPECT_TRUE(contains(text, "timestep=\"0.10000000000000001\" group=\"\" part=\"0\" name=\"boundary\" "
+                             "file=\"0/boundary.vtp\""))
+      << text;
+  EXPECT_TRUE(contains(text, "timestep=\"0.20000000000000001\" group=\"\" part=\"0\" name=\"boundary\" "
+                             "file=\"0.2/boundary.vtp\""))
+      << text;
+  EXPECT_TRUE(contains(text, "timestep=\"0.29999999999999999\" group=\"\" part=\"0\" name=\"boundary\" "
+                             "file=\"0.2/boundary.vtp\""))
+      << text;
+  PvdSeries::read(dir / "case.pvd").write(dir / "again.pvd");
+  EXPECT_EQ(readAll(dir / "again.pvd"), text);
+}
+
 TEST(PvdSeries, ASurfaceOfSomeTimesIsListedOnlyThere) {
   // fluidSurface run with -time 0.5 (or before the run went on): a surface must not stand in for later times.
   ScratchDirectory dir;
