@@ -470,6 +470,19 @@ TEST(Restart, WithoutZeroTheMissingStaticWallsAreNamed) {
   EXPECT_EQ(listTimeDirectories(runner.dir()).back().name, "0.003");
 }
 
+TEST(Restart, SamplingAgainOverARunSaysWhatItLeaves) {
+  // A new 0/ under the times of a run before it: they are kept (never lose data), but a run with startFrom
+  // latestTime would continue them and saturationAnalysis read them, so sampleParticles says so.
+  CaseRunner runner(kBaseCase);
+  ASSERT_NO_FATAL_FAILURE(runThreeSteps(runner));
+  ASSERT_EQ(runner.sample(), 0) << runner.read("log.sampleParticles");
+  const std::string log = runner.read("log.sampleParticles");
+  EXPECT_NE(log.find("holds 3 time directories after 0/ (0.001 ... 0.003) from before this sampling"),
+            std::string::npos)
+      << log;
+  EXPECT_EQ(listTimeDirectories(runner.dir()).back().name, "0.003");
+}
+
 /// Replaces the first x coordinate of an ascii particle file's Points.
 void moveFirstParticle(CaseRunner& runner, const std::string& file, const std::string& x) {
   std::string text = runner.read(file);

@@ -11,6 +11,7 @@
 #include "core/Parallel.hpp"
 #include "io/CaseLock.hpp"
 #include "io/CaseReader.hpp"
+#include "io/ProcessorDirectories.hpp"
 #include "io/SamplingRecord.hpp"
 #include "io/TimeDirectory.hpp"
 #include "physics/FieldNames.hpp"
@@ -47,6 +48,25 @@ bool hasRegion(const ParticleDict& dict, ParticleRegion::Phase phase, std::size_
     if (region.phase == phase && (phase != ParticleRegion::Phase::Porous || region.materialId == materialId))
       return true;
   return false;
+}
+
+/// Time directories after 0/ hold a run of an earlier sampling. They are not deleted (never lose data), but a run
+/// with startFrom latestTime would continue them and saturationAnalysis would read them with the new 0/.
+void warnOfEarlierRun(const fs::path& caseDir) {
+  std::vector<std::string> later;
+  for (const TimeDirectoryEntry& t : listTimeDirectories(caseDir))
+    if (t.time > 0.0) later.push_back(t.name);
+  const std::size_t subdomains = listProcessorDirectories(caseDir).size();
+  if (later.empty() && subdomains == 0) return;
+  std::ostringstream msg;
+  msg << caseDir.string() << " holds ";
+  if (!later.empty())
+    msg << later.size() << " time director" << (later.size() == 1 ? "y" : "ies") << " after 0/ (" << later.front()
+        << (later.size() > 1 ? " ... " + later.back() : std::string()) << ")" << (subdomains ? " and " : "");
+  if (subdomains) msg << subdomains << " processor directories";
+  msg << " from before this sampling. They stay as they are: a run with startFrom latestTime continues from them, "
+         "and saturationAnalysis reads them with the new 0/. Remove them to start from this 0/.";
+  log::warning(msg.str());
 }
 
 } // namespace
@@ -133,6 +153,7 @@ int main(int argc, char* argv[]) try {
   // What 0/ was sampled from: poroSph refuses to run it once particleDict's regions or the materials' order change.
   TimeWriter::writeAll(caseDir, particles, RunState{}, binary,
                        samplingRecord(particleDict, caseDir / "constant" / "triSurface", particles, materials));
+  warnOfEarlierRun(caseDir);
   std::ostringstream done;
   done << "Wrote " << (caseDir / "0").string() << " with " << particles.particleCount() << " particles (radius "
        << dict.particleRadius << " m) and " << (caseDir / "case.pvd").string() << "\nEnd";
