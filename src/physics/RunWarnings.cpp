@@ -51,6 +51,7 @@ std::string RunWarnings::summary(std::size_t movingAtStart, std::size_t movingAt
   line(Kind::LeftDomainRemoved, "particles left the domain and were deleted");
   line(Kind::OutsideDomainKept, "particles outside the domain kept in the run");
   line(Kind::RigidBodiesOutsideKept, "rigid bodies outside the domain kept in the run");
+  line(Kind::StepAboveCourant, "minDeltaT above the CFL step (maxCourant)");
   if (particles(Kind::NonFiniteRemoved) + particles(Kind::LeftDomainRemoved) > 0)
     out << "  " << movingAtEnd << " of the " << movingAtStart << " fluid and porous particles of the start remain\n";
   return out.str();

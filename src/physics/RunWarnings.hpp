@@ -18,6 +18,7 @@ public:
     LeftDomainRemoved,  ///< particles left the domain and were deleted (health.leavingDomain remove)
     OutsideDomainKept,  ///< particles outside the domain, kept (health.leavingDomain warn)
     RigidBodiesOutsideKept, ///< rigid bodies outside the domain, kept (health.leavingDomain warn)
+    StepAboveCourant,       ///< adjustTimeStep: the CFL step fell below minDeltaT, which the step took instead
   };
   /// A step that warned of `kind`; `particles` is how many particles of the whole run it concerns (0 for the solves).
   /// Every rank of a parallel run records the same.
@@ -34,7 +35,7 @@ public:
   std::string summary(std::size_t movingAtStart, std::size_t movingAtEnd) const;
 
 private:
-  static constexpr std::size_t kKinds = 6;
+  static constexpr std::size_t kKinds = 7;
   static std::size_t index(Kind kind) { return static_cast<std::size_t>(kind); }
   struct Tally {
     long long steps = 0;

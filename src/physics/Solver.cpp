@@ -805,6 +805,26 @@ void Solver::checkHealth(const Writer& write) {
     checkRigidBodiesInDomain(write);
   }
   checkIterations(write);
+  checkCourant();
+}
+
+void Solver::checkCourant() {
+  if (!control_.adjustTimeStep || report_.maxSpeed <= 0.0) return;
+  const double cfl = control_.maxCourant * particles_.spacing() / report_.maxSpeed;
+  if (cfl >= control_.minDeltaT) return;
+  // Warned of once, then counted (the log's summary): a fast wall can keep the step at minDeltaT for a whole run.
+  if (warnings_.steps(RunWarnings::Kind::StepAboveCourant) == 0 && (!ghosts_ || ghosts_->rank() == 0)) {
+    std::ostringstream msg;
+    msg << std::setprecision(6) << "step " << state_.step << " (time " << state_.time
+        << " s): max|v| = " << report_.maxSpeed << " m/s (particles or prescribed walls) asks for a step of maxCourant "
+        << "2r / max|v| = " << cfl << " s, below minDeltaT = " << control_.minDeltaT << " s; the steps take minDeltaT, "
+        << "so the fastest move " << control_.minDeltaT * report_.maxSpeed / particles_.spacing()
+        << " particle diameters per step instead of " << control_.maxCourant
+        << ". Lower minDeltaT in system/controlDict (or slow the walls' motion). Further such steps are counted in the "
+           "summary at the end of the run.";
+    log::warning(msg.str());
+  }
+  warnings_.record(RunWarnings::Kind::StepAboveCourant, state_.step, state_.time);
 }
 
 void Solver::checkRigidBodiesInDomain(const Writer& write) {

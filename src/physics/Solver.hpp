@@ -129,6 +129,8 @@ private:
   std::string describeDomain() const;
   void checkHealth(const Writer& write);
   void checkIterations(const Writer& write);
+  /// adjustTimeStep: warns (once, then counts) when the CFL step falls below minDeltaT, which the step takes instead.
+  void checkCourant();
   /// A rigid body whose centre left the domain stops the run (it cannot be deleted), or with health.leavingDomain
   /// warn is warned of once.
   void checkRigidBodiesInDomain(const Writer& write);

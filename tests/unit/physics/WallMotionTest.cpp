@@ -484,6 +484,26 @@ TEST(MovingWalls, TheFirstStepRespectsATurningPaddleAsEveryLaterOne) {
   EXPECT_LE(firstStep, 0.4 * solver.particles().spacing() / (omega * reach) * (1.0 + 1e-12));
 }
 
+TEST(MovingWalls, StepsThatMinDeltaTKeepAboveTheCourantLimitAreWarnedOfOnceAndCounted) {
+  // The paddle's tip (omega R about 3 m/s) asks for 0.4 2r / 3 m/s, under 3 ms: minDeltaT = 5 ms overrides it in
+  // every step. One warning, then every such step in the run's count.
+  TimeControl control = fixedStep(0.005);
+  control.adjustTimeStep = true;
+  control.maxCourant = 0.4;
+  control.minDeltaT = 0.005;
+  control.maxDeltaT = 0.01;
+  control.endTime = 0.015;
+  Solver solver(paddleTank(), FluidProperties{}, {}, SolverSettings{}, control, RunState{}, paddleMotion(31.4));
+  testing::internal::CaptureStderr();
+  solver.run([](const Solver&) {});
+  const std::string log = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(solver.state().step, 3);
+  EXPECT_EQ(solver.warnings().steps(RunWarnings::Kind::StepAboveCourant), 3);
+  const std::string below = "below minDeltaT = 0.005 s; the steps take minDeltaT";
+  EXPECT_NE(log.find(below), std::string::npos) << log;
+  EXPECT_EQ(log.find(below, log.find(below) + 1), std::string::npos) << log; // once
+}
+
 TEST(MovingWalls, TheDefaultDomainHoldsTheCircleOfARotatingWall) {
   // A bar 0.4 m long along x turning about z: the domain is the walls' box grown by its longest side, and the box
   // must be that of the circle the bar sweeps (y up to 0.19 + 0.38), not of the bar at rest (y up to 0.01 +
