@@ -281,6 +281,19 @@ bool isStalePvdTemporary(const std::string& entry) {
   return owner != static_cast<long>(::getpid()) && ::kill(static_cast<pid_t>(owner), 0) != 0 && errno == ESRCH;
 }
 
+/// qw, qx, qy, qz of a row of postProcessing/rigidBodies/<name>.csv (columns 5-8), if it has them.
+std::optional<Eigen::Quaterniond> quaternionOfRow(const std::string& row) {
+  double values[8];
+  const char* at = row.c_str();
+  for (double& value : values) {
+    char* end = nullptr;
+    value = std::strtod(at, &end);
+    if (end == at) return std::nullopt;
+    at = *end == ',' ? end + 1 : end;
+  }
+  return Eigen::Quaterniond(values[4], values[5], values[6], values[7]);
+}
+
 } // namespace
 
 void appendRigidBodyRows(const fs::path& caseDir, const RunState& state) {
@@ -292,14 +305,19 @@ void appendRigidBodyRows(const fs::path& caseDir, const RunState& state) {
   const char* header = "time,cx,cy,cz,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz";
   for (const RigidBodyState& b : state.rigidBodies) {
     const fs::path file = dir / (b.name + ".csv");
-    std::string kept = std::string(header) + "\n";
+    std::string kept = std::string(header) + "\n", previous;
     if (std::ifstream in{file}) {
       std::string line;
       std::getline(in, line);
       while (std::getline(in, line))
-        if (!line.empty() && std::strtod(line.c_str(), nullptr) < state.time - 1e-12) kept += line + "\n";
+        if (!line.empty() && std::strtod(line.c_str(), nullptr) < state.time - 1e-12) {
+          kept += line + "\n";
+          previous = line;
+        }
     }
-    const Eigen::Quaterniond q{Eigen::Matrix3d(b.rotation)};
+    Eigen::Quaterniond q{Eigen::Matrix3d(b.rotation)};
+    // q and -q are the same rotation: the sign nearest the row before keeps the columns continuous for plots.
+    if (const auto p = quaternionOfRow(previous); p && p->dot(q) < 0.0) q.coeffs() = -q.coeffs();
     std::ostringstream row;
     row << std::setprecision(10) << state.time;
     for (double value :

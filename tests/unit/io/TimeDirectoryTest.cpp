@@ -7,7 +7,11 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 
 namespace poro {
 namespace {
@@ -100,6 +104,35 @@ TEST(TimeDirectory, ASeriesRebuiltFromTheTimeDirectoriesListsParticlesAndSurface
     if (entry.part != "fluidSurface") particlesOnly.add(entry.time, entry.part, entry.file);
   particlesOnly.write(dir / "case.pvd");
   EXPECT_EQ(test::readAll(dir / "case.pvd"), written);
+}
+
+TEST(RigidBodyRows, TheQuaternionKeepsTheSignOfTheRowBefore) {
+  // A body turned 230 then 250 degrees about z: the matrix-to-quaternion conversion gives w < 0 at 230 and w > 0 at
+  // 250, a jump in every column of a plot though q and -q are one rotation. The row after keeps the sign nearest the
+  // row before, also when it is appended by a later run (a restart reads the row from the file).
+  ScratchDirectory dir;
+  RunState state;
+  state.rigidBodies.push_back({});
+  state.rigidBodies[0].name = "box";
+  const auto quaternionAt = [&](double time, double degrees) {
+    state.time = time;
+    state.rigidBodies[0].rotation = Eigen::AngleAxisd(degrees * M_PI / 180.0, Vec3::UnitZ()).toRotationMatrix();
+    appendRigidBodyRows(dir.path(), state);
+    const std::string text = test::readAll(dir / "postProcessing/rigidBodies/box.csv");
+    const std::string last = text.substr(text.rfind('\n', text.size() - 2) + 1);
+    double v[8];
+    const char* at = last.c_str();
+    for (double& value : v) {
+      char* end = nullptr;
+      value = std::strtod(at, &end);
+      at = end + 1;
+    }
+    return Eigen::Vector4d(v[4], v[5], v[6], v[7]);
+  };
+  const Eigen::Vector4d before = quaternionAt(0.1, 230.0);
+  const Eigen::Vector4d after = quaternionAt(0.2, 250.0);
+  EXPECT_GT(before.dot(after), 0.9) << before.transpose() << " then " << after.transpose();
+  EXPECT_NEAR(std::abs(after[0]), std::abs(std::cos(125.0 * M_PI / 180.0)), 1e-9); // |w| = |cos(theta / 2)|
 }
 
 } // namespace
