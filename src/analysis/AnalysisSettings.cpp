@@ -3,6 +3,7 @@
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
 #include "io/CaseReader.hpp"
+#include "io/SamplingRecord.hpp"
 #include "physics/FluidProperties.hpp"
 
 namespace poro {
@@ -32,6 +33,17 @@ std::vector<std::string> readRegionNames(const Dictionary& particleDict) {
 }
 
 } // namespace
+
+std::vector<std::string> sampledRegionNames(const fs::path& timeDir, const std::vector<std::string>& current) {
+  const fs::path record = timeDir / "uniform" / kSamplingRecordName;
+  if (!fs::exists(record)) return current;
+  try {
+    std::vector<std::string> names = readRegionNames(Dictionary::read(record.string()));
+    return names.empty() ? current : names;
+  } catch (const InputError&) { // unreadable: the objects keep particleDict's names
+    return current;
+  }
+}
 
 AnalysisSettings readAnalysisSettings(const fs::path& caseDir) {
   AnalysisSettings settings;

@@ -28,4 +28,9 @@ struct AnalysisSettings {
 /// and constant/porosityProperties. Missing or invalid files are InputErrors naming the file.
 AnalysisSettings readAnalysisSettings(const std::filesystem::path& caseDir);
 
+/// The names of the regions the particles of `timeDir` were sampled from (its uniform/sampling), which name its
+/// objects even after system/particleDict changed; `current` (particleDict's) for a time written before the record.
+std::vector<std::string> sampledRegionNames(const std::filesystem::path& timeDir,
+                                            const std::vector<std::string>& current);
+
 } // namespace poro

@@ -44,11 +44,14 @@ TimeRecord analyseTimeDirectory(const std::filesystem::path& caseDir, const std:
                                                                    : listProcessorDirectories(caseDir);
   const RunState state =
       processors.empty() ? readRunState(caseDir / name) : readDecomposedRunState(processors, name);
+  AnalysisSettings sampled = settings; // the objects are named as their regions were when they were sampled
+  sampled.regionNames = sampledRegionNames((processors.empty() ? caseDir : processors.front()) / name,
+                                           settings.regionNames);
   TimeRecord record =
       analyse(processors.empty()
                   ? readParticles(caseDir, name, settings.particleRadius, settings.materials)
                   : readDecomposedParticles(processors, name, settings.particleRadius, settings.materials),
-              settings);
+              sampled);
   record.name = name;
   record.time = state.time;
   record.step = state.step;
