@@ -181,8 +181,9 @@ TEST_F(DecomposedCase, RefusesToOverwriteAndNamesMissingPieces) {
   EXPECT_NE(runner.read("log.decomposePar").find("at time 0.1"), std::string::npos); // the latest by default
   EXPECT_EQ(runner.run(POROSPH_DECOMPOSE), 1);
   EXPECT_NE(runner.read("log.decomposePar").find("-force"), std::string::npos) << runner.read("log.decomposePar");
-  ASSERT_EQ(runner.run(POROSPH_DECOMPOSE, "-force -time 0.05"), 0) << runner.read("log.decomposePar");
+  ASSERT_EQ(runner.run(POROSPH_DECOMPOSE, "-force -time 0.050"), 0) << runner.read("log.decomposePar"); // by value
   EXPECT_FALSE(fs::exists(runner.dir() / "processor0" / "0.1")); // the earlier decomposition is gone
+  EXPECT_TRUE(fs::exists(runner.dir() / "processor0" / "0.05"));
 
   EXPECT_EQ(runner.run(POROSPH_DECOMPOSE, "-force -time 0.07"), 1);
   EXPECT_NE(runner.read("log.decomposePar").find("0.07"), std::string::npos);

@@ -11,6 +11,8 @@
 #include "parallel/Decomposition.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -36,9 +38,13 @@ std::string timeToDecompose(const Arguments& args, const fs::path& caseDir) {
     throw InputError(caseDir.string() + ": no complete time directory to decompose; run sampleParticles first");
   if (!args.has("time")) return times.back().name;
   const std::string wanted = args.value("time");
+  char* end = nullptr;
+  const double value = std::strtod(wanted.c_str(), &end);
+  if (wanted.empty() || *end != '\0' || !std::isfinite(value))
+    throw InputError("option -time: expected a time value, got '" + wanted + "'");
   std::string available;
-  for (const TimeDirectoryEntry& t : times) {
-    if (t.name == wanted) return wanted;
+  for (const TimeDirectoryEntry& t : times) { // by value, as saturationAnalysis and reconstructPar: 0.20 is 0.2
+    if (std::abs(t.time - value) <= 1e-10 * std::max(1.0, std::abs(value))) return t.name;
     available += " " + t.name;
   }
   throw InputError("option -time: no complete time directory " + wanted + " in " + caseDir.string() +
