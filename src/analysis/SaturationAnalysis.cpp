@@ -45,13 +45,12 @@ TimeRecord analyseTimeDirectory(const std::filesystem::path& caseDir, const std:
   const RunState state =
       processors.empty() ? readRunState(caseDir / name) : readDecomposedRunState(processors, name);
   AnalysisSettings sampled = settings; // the objects are named as their regions were when they were sampled
-  sampled.regionNames = sampledRegionNames((processors.empty() ? caseDir : processors.front()) / name,
-                                           settings.regionNames);
-  TimeRecord record =
-      analyse(processors.empty()
-                  ? readParticles(caseDir, name, settings.particleRadius, settings.materials)
-                  : readDecomposedParticles(processors, name, settings.particleRadius, settings.materials),
-              sampled);
+  sampled.regionNames =
+      sampledRegionNames((processors.empty() ? caseDir : processors.front()) / name, settings.regionNames);
+  TimeRecord record = analyse(
+      processors.empty() ? readParticles(caseDir, name, settings.particleRadius, settings.materials)
+                         : readDecomposedParticles(processors, name, settings.particleRadius, settings.materials),
+      sampled);
   record.name = name;
   record.time = state.time;
   record.step = state.step;

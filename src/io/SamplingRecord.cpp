@@ -134,8 +134,8 @@ std::string samplingRecord(const Dictionary& particleDict, const fs::path& surfa
   }
   // An empty list is written before the comment: after it, YAML would read no value at all.
   out << "porousMaterials:" << (sampledAs.str().empty() ? " []" : "")
-      << "  # materialId in porous.vtp: the material of constant/porosityProperties it was sampled as" << sampledAs.str()
-      << "\n";
+      << "  # materialId in porous.vtp: the material of constant/porosityProperties it was sampled as"
+      << sampledAs.str() << "\n";
   return out.str();
 }
 

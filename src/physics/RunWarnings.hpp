@@ -12,11 +12,11 @@ namespace poro {
 class RunWarnings {
 public:
   enum class Kind {
-    PressureIterations, ///< pressure.maxIterations reached
-    ImplicitIterations, ///< implicit.maxIterations reached
-    NonFiniteRemoved,   ///< NaN or inf: particles deleted (health.nonFinite remove)
-    LeftDomainRemoved,  ///< particles left the domain and were deleted (health.leavingDomain remove)
-    OutsideDomainKept,  ///< particles outside the domain, kept (health.leavingDomain warn)
+    PressureIterations,     ///< pressure.maxIterations reached
+    ImplicitIterations,     ///< implicit.maxIterations reached
+    NonFiniteRemoved,       ///< NaN or inf: particles deleted (health.nonFinite remove)
+    LeftDomainRemoved,      ///< particles left the domain and were deleted (health.leavingDomain remove)
+    OutsideDomainKept,      ///< particles outside the domain, kept (health.leavingDomain warn)
     RigidBodiesOutsideKept, ///< rigid bodies outside the domain, kept (health.leavingDomain warn)
     StepAboveCourant,       ///< adjustTimeStep: the CFL step fell below minDeltaT, which the step took instead
   };

@@ -582,7 +582,7 @@ void Solver::step(double deltaT) {
     state_.nextDeltaT =
         cflStepSize(control_, report_.maxSpeed, particles_.spacing(), deltaT, report_.pressure.iterations);
     placeWalls(state_.time, state_.nextDeltaT); // written time directories show the walls where they are
-    if (!wallMotions_.empty()) updateDomain(); // the domain goes where the walls go (a container carried along)
+    if (!wallMotions_.empty()) updateDomain();  // the domain goes where the walls go (a container carried along)
   }
 }
 
@@ -758,7 +758,8 @@ void Solver::checkHealth(const Writer& write) {
                    whatToChange() + ".");
     } else {
       snapshot_.restore(particles_, state_);
-      placeWalls(state_.time, state_.nextDeltaT); // moving walls and rigid bodies back where the restored state has them
+      // Moving walls and rigid bodies back where the restored state has them.
+      placeWalls(state_.time, state_.nextDeltaT);
       PressureSolver::formPressures(particles_, dynamicSets_);
       for (std::size_t s : dynamicSets_) { // a restart from the written state solves from a cold start
         auto& deltaV = particles_[s].vec3(field::deltaV);
@@ -882,7 +883,7 @@ void Solver::checkIterations(const Writer& write) {
     if (health.pressureIterations == HealthAction::Stop)
       stopAfterWriting(write, msg.str() + " (health.pressureIterations stop).");
     warnings_.record(RunWarnings::Kind::PressureIterations, state_.step, state_.time);
-    if (!ghosts_ || ghosts_->rank() == 0) log::warning(msg.str() + "."); // the run's solve: one warning, not one per rank
+    if (!ghosts_ || ghosts_->rank() == 0) log::warning(msg.str() + "."); // the run's solve: once, not per rank
   }
   if (!report_.implicit.converged) {
     std::ostringstream msg;
@@ -905,8 +906,9 @@ std::string Solver::mostCompressedOfTheRun(const std::vector<std::size_t>& sets)
   if (i < particles_[s].size()) {
     const ParticleSet& set = particles_[s];
     const Vec3 p = set.x()[i];
-    candidate = {set.vec3(PressureSolver::sweepStateField)[i][PressureSolver::kResidual], static_cast<double>(s),
-                 static_cast<double>(set.integer(field::id)[i]), p.x(), p.y(), p.z()};
+    const double residual = set.vec3(PressureSolver::sweepStateField)[i][PressureSolver::kResidual];
+    const auto id = static_cast<double>(set.integer(field::id)[i]);
+    candidate = {residual, static_cast<double>(s), id, p.x(), p.y(), p.z()};
   }
   if (ghosts_) candidate = ghosts_->gather(candidate); // every rank's, in rank order: the first largest wins
   if (candidate.empty()) return {};
@@ -914,9 +916,10 @@ std::string Solver::mostCompressedOfTheRun(const std::vector<std::size_t>& sets)
   for (std::size_t k = 6; k + 6 <= candidate.size(); k += 6)
     if (candidate[k] > candidate[best]) best = k;
   std::ostringstream out;
-  out << std::setprecision(6) << "; most compressed: " << particles_[static_cast<std::size_t>(candidate[best + 1])].name()
-      << " particle id " << static_cast<std::int64_t>(candidate[best + 2]) << " at (" << candidate[best + 3] << ", "
-      << candidate[best + 4] << ", " << candidate[best + 5] << "), " << 100.0 * candidate[best] << " %";
+  out << std::setprecision(6)
+      << "; most compressed: " << particles_[static_cast<std::size_t>(candidate[best + 1])].name() << " particle id "
+      << static_cast<std::int64_t>(candidate[best + 2]) << " at (" << candidate[best + 3] << ", " << candidate[best + 4]
+      << ", " << candidate[best + 5] << "), " << 100.0 * candidate[best] << " %";
   return out.str();
 }
 
@@ -949,8 +952,8 @@ RunOutcome Solver::run(const Writer& write, const Monitor& afterStep, const Obse
   if (state_.step == 0) {
     if (!startChecked_) checkStart();
     if (control_.adjustTimeStep) { // the first step respects the start's speeds and the walls' as every later one
-      state_.nextDeltaT = std::min(
-          state_.nextDeltaT, cflStepSize(control_, maxSpeed(), particles_.spacing(), state_.nextDeltaT, 0));
+      state_.nextDeltaT =
+          std::min(state_.nextDeltaT, cflStepSize(control_, maxSpeed(), particles_.spacing(), state_.nextDeltaT, 0));
       placeWalls(state_.time, state_.nextDeltaT);
     }
     // 0/ as sampled holds positions and velocities only; rewritten with the start's densities, saturations and

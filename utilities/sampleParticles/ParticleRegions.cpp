@@ -218,9 +218,9 @@ ParticleDict ParticleDict::read(const Dictionary& dict, const std::vector<Porous
     // Names become file names (postProcessing/rigidBodies/<name>.csv, saturationAnalysis' plots).
     const bool fileName = !r.name.empty() && r.name != "." && r.name != ".." &&
                           r.name.find_first_of(std::string("/\\\0", 3)) == std::string::npos;
-    if (!fileName)
-      region.fail("name", "expected a region name that can be a file name (not empty, '.' or '..', no '/' or '\\'), "
-                          "got '" + r.name + "'");
+    const std::string expected = "expected a region name that can be a file name (not empty, '.' or '..', no '/' "
+                                 "or '\\'), got '";
+    if (!fileName) region.fail("name", expected + r.name + "'");
     const std::string phase = region.getWord("phase", {"fluid", "porous", "boundary", "rigid"});
     r.phase = phase == "fluid"    ? ParticleRegion::Phase::Fluid
               : phase == "porous" ? ParticleRegion::Phase::Porous

@@ -289,8 +289,7 @@ TEST(RigidBody, ABodyLeavingTheDomainStopsTheRunAsItCannotBeDeleted) {
     ADD_FAILURE() << "the run went on with its body outside the domain";
   } catch (const NumericalError& e) {
     const std::string message = e.what();
-    EXPECT_NE(message.find("step 11 (time 0.011 s): rigid body 'block' left the domain"), std::string::npos)
-        << message;
+    EXPECT_NE(message.find("step 11 (time 0.011 s): rigid body 'block' left the domain"), std::string::npos) << message;
     EXPECT_NE(message.find("health.leavingDomain warn in system/solverDict keeps it"), std::string::npos) << message;
   }
   EXPECT_EQ(solver.state().step, 11);
@@ -304,7 +303,7 @@ TEST(RigidBody, ABodyLeavingTheDomainIsWarnedOfOnceAndCountedWhenKept) {
   EXPECT_EQ(solver.state().step, 15);
   EXPECT_NE(log.find("step 11 (time 0.011 s): rigid body 'block' left the domain"), std::string::npos) << log;
   const std::string left = "rigid body 'block' left the domain";
-  EXPECT_EQ(log.find(left, log.find(left) + 1), std::string::npos) << log; // once
+  EXPECT_EQ(log.find(left, log.find(left) + 1), std::string::npos) << log;          // once
   EXPECT_EQ(solver.warnings().steps(RunWarnings::Kind::RigidBodiesOutsideKept), 5); // steps 11 to 15
   EXPECT_EQ(solver.warnings().particles(RunWarnings::Kind::RigidBodiesOutsideKept), 1u);
 }
@@ -317,10 +316,10 @@ TEST(RigidBody, ABodyDoesNotMakeTheDefaultDomainWallsDo) {
   ParticleSystem bodyAndFluid(kR);
   std::int64_t id = 0;
   append(bodyAndFluid.add("fluid", SetKind::Fluid), sampleBox(Vec3::Zero(), Vec3(0.2, 0.2, 0.2), kR), 0, id);
-  append(bodyAndFluid.add("boundary", SetKind::Boundary), sampleBox(Vec3(0.5, 0.5, 0.5), Vec3(0.54, 0.54, 0.54), kR),
-         0, id);
-  EXPECT_NO_THROW(Solver(std::move(bodyAndFluid), FluidProperties{}, {}, SolverSettings{}, fixedStep(1e-3),
-                         RunState{}, {}, {body}));
+  append(bodyAndFluid.add("boundary", SetKind::Boundary), sampleBox(Vec3(0.5, 0.5, 0.5), Vec3(0.54, 0.54, 0.54), kR), 0,
+         id);
+  EXPECT_NO_THROW(Solver(std::move(bodyAndFluid), FluidProperties{}, {}, SolverSettings{}, fixedStep(1e-3), RunState{},
+                         {}, {body}));
   TimeControl oneStep = fixedStep(1e-3);
   oneStep.endTime = 1e-3;
   SolverSettings touching;

@@ -537,16 +537,15 @@ TEST(MovingWalls, TheDefaultDomainGoesWhereATranslatingContainerGoes) {
   append(ps.add("fluid", SetKind::Fluid), sampleBox(Vec3::Zero(), Vec3::Constant(0.12), kR), 0, id);
   const double g = kGap, t = 4 * kR, a = -t - g, b = 0.12 + t + g, lo = -g, hi = 0.12 + g; // two layers
   ParticleSet& box = ps.add("boundary", SetKind::Boundary);
-  append(box, sampleBox(Vec3(a, a, a), Vec3(b, lo, b), kR), 0, id);     // floor
-  append(box, sampleBox(Vec3(a, hi, a), Vec3(b, b, b), kR), 0, id);     // lid
-  append(box, sampleBox(Vec3(a, lo, a), Vec3(lo, hi, b), kR), 0, id);   // x sides
+  append(box, sampleBox(Vec3(a, a, a), Vec3(b, lo, b), kR), 0, id);   // floor
+  append(box, sampleBox(Vec3(a, hi, a), Vec3(b, b, b), kR), 0, id);   // lid
+  append(box, sampleBox(Vec3(a, lo, a), Vec3(lo, hi, b), kR), 0, id); // x sides
   append(box, sampleBox(Vec3(hi, lo, a), Vec3(b, hi, b), kR), 0, id);
   append(box, sampleBox(Vec3(lo, lo, a), Vec3(hi, hi, lo), kR), 0, id); // z sides
   append(box, sampleBox(Vec3(lo, lo, hi), Vec3(hi, hi, b), kR), 0, id);
   const Vec3 u(10.0, 0.0, 0.0);
   for (Vec3& v : ps[0].v()) v = u;
-  const std::vector<ObjectMotion> carried{
-      {0, "box", "system/particleDict:9", WallMotion({{0.0, Vec3::Zero()}}, u)}};
+  const std::vector<ObjectMotion> carried{{0, "box", "system/particleDict:9", WallMotion({{0.0, Vec3::Zero()}}, u)}};
   FluidProperties weightless;
   weightless.gravity = Vec3::Zero();
   SolverSettings settings;
